@@ -3,6 +3,13 @@
 #include <algorithm>
 
 namespace colav {
+namespace {
+
+// Polls before a worker sleeps (each poll yields the core): long enough to bridge the gap
+// between two environment steps, short enough not to burn a core when the pool is idle.
+constexpr int kSpinPolls = 2000;
+
+}  // namespace
 
 ThreadPool::ThreadPool(int num_threads) {
   for (int worker = 1; worker < std::max(1, num_threads); ++worker) {
@@ -15,7 +22,7 @@ ThreadPool::~ThreadPool() {
     const std::lock_guard<std::mutex> lock(mutex_);
     stopping_ = true;
   }
-  work_ready_.notify_all();
+  wake_.notify_all();
   for (std::thread& thread : workers_) thread.join();
 }
 
@@ -40,32 +47,33 @@ void ThreadPool::ParallelFor(int count, const std::function<void(int)>& body) {
     const std::lock_guard<std::mutex> lock(mutex_);
     body_ = &body;
     count_ = count;
-    pending_ = static_cast<int>(workers_.size());
     error_ = nullptr;
-    ++generation_;
+    pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_release);
   }
-  work_ready_.notify_all();
+  wake_.notify_all();
   RunChunk(0);
-  std::unique_lock<std::mutex> lock(mutex_);
-  work_done_.wait(lock, [this] { return pending_ == 0; });
+  while (pending_.load(std::memory_order_acquire) != 0) std::this_thread::yield();
   if (error_) std::rethrow_exception(error_);
+}
+
+bool ThreadPool::WaitForWork(std::uint64_t seen) {
+  for (int poll = 0; poll < kSpinPolls; ++poll) {
+    if (stopping_.load(std::memory_order_relaxed)) return false;
+    if (generation_.load(std::memory_order_acquire) != seen) return true;
+    std::this_thread::yield();
+  }
+  std::unique_lock<std::mutex> lock(mutex_);
+  wake_.wait(lock, [&] { return stopping_ || generation_.load() != seen; });
+  return !stopping_;
 }
 
 void ThreadPool::WorkerLoop(int worker) {
   std::uint64_t seen = 0;
-  while (true) {
-    {
-      std::unique_lock<std::mutex> lock(mutex_);
-      work_ready_.wait(lock, [&] { return stopping_ || generation_ != seen; });
-      if (stopping_) return;
-      seen = generation_;
-    }
+  while (WaitForWork(seen)) {
+    seen = generation_.load(std::memory_order_acquire);
     RunChunk(worker);
-    {
-      const std::lock_guard<std::mutex> lock(mutex_);
-      --pending_;
-    }
-    work_done_.notify_one();
+    pending_.fetch_sub(1, std::memory_order_acq_rel);
   }
 }
 

@@ -1,10 +1,12 @@
 // A fixed pool of worker threads that runs one parallel loop at a time; the calling thread
-// takes part. Small and allocation-free per call, for stepping a few worlds every few
-// microseconds.
+// takes part. Built for stepping a few worlds every few microseconds: workers spin briefly
+// before sleeping, so back-to-back loops do not pay a futex wake-up each.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -23,22 +25,23 @@ class ThreadPool {
   int num_threads() const { return static_cast<int>(workers_.size()) + 1; }
 
   /// Calls body(i) for i in [0, count), split into contiguous chunks, one per thread; returns
-  /// when all calls are done. Exceptions of body are rethrown in the caller.
+  /// when all calls are done. An exception of body is rethrown in the caller.
   void ParallelFor(int count, const std::function<void(int)>& body);
 
  private:
   void WorkerLoop(int worker);
   void RunChunk(int chunk);
+  /// Waits until generation_ differs from `seen` or the pool stops; false when stopping.
+  bool WaitForWork(std::uint64_t seen);
 
   std::vector<std::thread> workers_;
   std::mutex mutex_;
-  std::condition_variable work_ready_;
-  std::condition_variable work_done_;
+  std::condition_variable wake_;
   const std::function<void(int)>* body_ = nullptr;
   int count_ = 0;
-  std::uint64_t generation_ = 0;
-  int pending_ = 0;
-  bool stopping_ = false;
+  std::atomic<std::uint64_t> generation_{0};
+  std::atomic<int> pending_{0};
+  std::atomic<bool> stopping_{false};
   std::exception_ptr error_;
 };
 
