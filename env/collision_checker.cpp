@@ -3,42 +3,9 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/collision_object.h>
 
+#include "env/fcl_shapes.h"
+
 namespace colav {
-namespace {
-
-// Prism height: any value well above the vessel sphere's diameter works.
-constexpr double kPrismHeight = 10.0;
-
-fcl::Transform3d PlanarTranslation(const Eigen::Vector2d& position) {
-  fcl::Transform3d transform = fcl::Transform3d::Identity();
-  transform.translation() = Eigen::Vector3d(position.x(), position.y(), 0.0);
-  return transform;
-}
-
-// A pentagonal prism of a hull, vertices relative to the obstacle position.
-std::shared_ptr<fcl::Convexd> PrismOf(const ConvexPolygon& hull) {
-  auto vertices = std::make_shared<std::vector<fcl::Vector3d>>();
-  const int n = hull.size;
-  for (const double z : {-kPrismHeight / 2.0, kPrismHeight / 2.0}) {
-    for (int k = 0; k < n; ++k) {
-      const Eigen::Vector2d v = hull.vertices[k] - hull.bound_center;
-      vertices->emplace_back(v.x(), v.y(), z);
-    }
-  }
-  // Faces: [count, indices...]; bottom, top, then one quad per edge.
-  auto faces = std::make_shared<std::vector<int>>();
-  faces->push_back(n);
-  for (int k = 0; k < n; ++k) faces->push_back(k);
-  faces->push_back(n);
-  for (int k = n - 1; k >= 0; --k) faces->push_back(n + k);
-  for (int k = 0; k < n; ++k) {
-    const int next = (k + 1) % n;
-    faces->insert(faces->end(), {4, k, next, n + next, n + k});
-  }
-  return std::make_shared<fcl::Convexd>(vertices, n + 2, faces);
-}
-
-}  // namespace
 
 struct CollisionChecker::Shapes {
   std::shared_ptr<fcl::Sphered> vessel;
@@ -63,17 +30,17 @@ void CollisionChecker::Load(const std::vector<CircleSpec>& circles,
   for (const CircleSpec& circle : circles) {
     shapes_->circles.push_back(std::make_unique<fcl::CollisionObjectd>(
         std::make_shared<fcl::Cylinderd>(circle.radius, kPrismHeight),
-        PlanarTranslation(circle.center)));
+        PlanarTransform(circle.center)));
   }
   for (const MovingObstacle& vessel : vessels) {
     shapes_->vessels.push_back(std::make_unique<fcl::CollisionObjectd>(
-        PrismOf(vessel.hull()), PlanarTranslation(vessel.hull().bound_center)));
+        FclPrism(vessel.hull()), PlanarTransform(vessel.hull().bound_center)));
   }
 }
 
 bool CollisionChecker::Collides(const Eigen::Vector2d& position,
                                 const std::vector<MovingObstacle>& vessels) {
-  const fcl::CollisionObjectd disc(shapes_->vessel, PlanarTranslation(position));
+  const fcl::CollisionObjectd disc(shapes_->vessel, PlanarTransform(position));
   const fcl::CollisionRequestd request;
   const auto overlaps = [&](const fcl::CollisionObjectd& obstacle) {
     fcl::CollisionResultd result;
