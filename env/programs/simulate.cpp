@@ -9,8 +9,10 @@
 #include "env/scenario_file.h"
 #include "env/scene_plot.h"
 #include "env/trace.h"
+#include "env/training_scenario.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
+#include "src/error.h"
 
 namespace colav {
 namespace {
@@ -31,7 +33,14 @@ int Simulate(int argc, char** argv) {
   std::string actions_path;
   std::string trace_path;
   std::string plot_path;
-  app.add_option("--scenario", scenario_path, "scenario file (YAML)")->required();
+  std::uint64_t training_seed = 0;
+  std::string save_scenario_path;
+  auto* scenario_option = app.add_option("--scenario", scenario_path, "scenario file (YAML)");
+  auto* seed_option = app.add_option("--training-seed", training_seed,
+                                     "instead of --scenario: the paper's training world of this seed");
+  scenario_option->excludes(seed_option);
+  app.add_option("--save-scenario", save_scenario_path,
+                 "also write the scenario as a scenario file (e.g. to edit a training world)");
   app.add_option("--actions", actions_path, "actions file: header a0,a1, one row per step")
       ->required();
   app.add_option("--out", trace_path, "trace file to write (CSV)")->required();
@@ -40,7 +49,13 @@ int Simulate(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
 
-  const Scenario scenario = LoadScenarioFile(scenario_path);
+  if (scenario_path.empty() && seed_option->count() == 0) {
+    throw UserError("give a scenario: --scenario FILE.yaml or --training-seed S");
+  }
+  const Scenario scenario = seed_option->count() > 0
+                                ? TrainingScenarioGenerator().Make(training_seed)
+                                : LoadScenarioFile(scenario_path);
+  if (!save_scenario_path.empty()) WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
   const auto actions = LoadActionsFile(actions_path);
   Environment env(EnvironmentConfigFrom(config), std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
