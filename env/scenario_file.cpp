@@ -7,6 +7,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "src/error.h"
+#include "src/yaml_file.h"
 
 namespace colav {
 namespace {
@@ -112,14 +113,7 @@ class ScenarioReader {
 
 Scenario LoadScenarioFile(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (!std::filesystem::exists(path)) throw UserError(file + ": no such file");
-  YAML::Node root;
-  try {
-    root = YAML::LoadFile(file);
-  } catch (const YAML::Exception& e) {
-    throw UserError(file + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + ": " +
-                    e.msg + ")");
-  }
+  const YAML::Node root = LoadYamlFile(path);
   const ScenarioReader reader(file);
   if (!root.IsMap()) reader.Fail("", "expects a mapping with keys path, vessel, ...");
   Scenario scenario;

@@ -94,7 +94,7 @@ TEST_F(ScenarioFileTest, BadFilesGiveOneLineErrorsNamingTheKey) {
                "key 'static_obstacles[0].radius' must be positive");
   expect_error("path: {waypoints: [[0, 0], [0, 0]]}\nvessel: {position: [0, 0], heading: 0}\n",
                "equal consecutive waypoints");
-  expect_error("path: [unclosed\n", "not valid YAML");
+  expect_error("path: [unclosed\n", "malformed YAML");
   EXPECT_NE(std::string(ErrorOf(kValid)).find("no error"), std::string::npos);
   try {
     LoadScenarioFile("/nonexistent/scenario.yaml");

@@ -1,0 +1,95 @@
+// Command-line plumbing shared by every program: uniform error reporting and exit codes, the
+// common --config / --set flags resolved into a Config, and clean stopping on Ctrl-C.
+//
+//   int main(int argc, char** argv) {
+//     return colav::RunProgram("train_ppo", argc, argv, [](int argc, char** argv) {
+//       CLI::App app{"Trains the PPO agent."};
+//       colav::ConfigFlags config_flags(app, TrainPpoSchema());
+//       config_flags.AddFlag("--steps", "ppo.total_steps");
+//       colav::ParseCommandLine(app, argc, argv);
+//       const colav::Config config = config_flags.Resolve();
+//       ...
+//     });
+//   }
+#pragma once
+
+#include <signal.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "src/config.h"
+
+namespace CLI {
+class App;
+class Option;
+}  // namespace CLI
+
+namespace colav {
+
+/// Runs `body(argc, argv)` and returns its exit status, turning escaping exceptions into one line
+/// on stderr: colav::UserError -> "<program>: error: <message>", status 2; CLI::ParseError ->
+/// "<program>: error: <message>" with CLI11's exit code (help: status 0, nothing printed here);
+/// anything else -> "<program>: internal error: <message>", status 1. Only the first line of a
+/// message is printed (LibTorch errors append a backtrace).
+int RunProgram(const std::string& program, int argc, char** argv,
+               const std::function<int(int, char**)>& body);
+
+/// The program name given to the running RunProgram ("colav" outside one).
+const std::string& ProgramName();
+
+/// Parses the command line into `app`. --help prints the help and throws the CLI::Success that
+/// RunProgram turns into exit status 0; a bad command line throws CLI::ParseError.
+void ParseCommandLine(CLI::App& app, int argc, char** argv);
+
+/// The flags that feed a Config: --config FILE.yaml, repeatable --set key=value, and shortcut
+/// flags for single keys. `app` must outlive this object.
+class ConfigFlags {
+ public:
+  /// Adds --config and --set to `app`, and the schema's keys to its help.
+  ConfigFlags(CLI::App& app, const ConfigSchema& schema);
+
+  /// Adds `flag VALUE` (e.g. "--steps") meaning --set key=VALUE, documented by the key's doc.
+  CLI::Option* AddFlag(const std::string& flag, const std::string& key);
+  /// Adds a flag without value that sets bool `key` to `value` (e.g. --locked / --unlocked).
+  CLI::Option* AddSwitch(const std::string& flag, const std::string& key, bool value,
+                         const std::string& doc);
+
+  /// After parsing: the schema defaults, then the --config file, then the --set overrides in
+  /// order, then the shortcut flags in command-line order. Bad input is a colav::UserError.
+  Config Resolve() const;
+
+ private:
+  struct Shortcut {
+    CLI::Option* option;
+    std::string key;
+    std::string switch_value;  // "" for a flag with a value
+  };
+
+  CLI::App& app_;
+  ConfigSchema schema_;
+  CLI::Option* config_option_;
+  CLI::Option* set_option_;
+  std::vector<Shortcut> shortcuts_;
+};
+
+/// Turns SIGINT and SIGTERM into a request to stop, so that a training loop can checkpoint and
+/// exit cleanly; a second signal ends the program at once. Installs the handlers for its lifetime
+/// (one StopFlag at a time), restoring the previous ones afterwards.
+class StopFlag {
+ public:
+  StopFlag();
+  StopFlag(const StopFlag&) = delete;
+  StopFlag& operator=(const StopFlag&) = delete;
+  ~StopFlag();
+
+  /// True once SIGINT or SIGTERM has arrived.
+  static bool StopRequested();
+
+ private:
+  struct sigaction previous_interrupt_ {};
+  struct sigaction previous_terminate_ {};
+};
+
+}  // namespace colav
