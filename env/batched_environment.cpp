@@ -22,19 +22,21 @@ BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_
       truncated_(num_envs, 0),
       finished_episodes_(num_envs) {
   const auto source = std::make_shared<TrainingScenarioGenerator>();
-  for (int i = 0; i < num_envs; ++i) worlds_.push_back(std::make_unique<Environment>(config, source));
+  for (int i = 0; i < num_envs; ++i)
+    worlds_.push_back(std::make_unique<Environment>(config, source));
 }
 
 BatchedEnvironment::~BatchedEnvironment() = default;
 
 std::uint64_t BatchedEnvironment::EpisodeSeed(int index) const {
-  return DeriveSeed(seed_, "episode", (static_cast<std::uint64_t>(index) << 32U) +
-                                          episode_counts_[index]);
+  return DeriveSeed(seed_, "episode",
+                    (static_cast<std::uint64_t>(index) << 32U) + episode_counts_[index]);
 }
 
 void BatchedEnvironment::Reset() {
   pool_->ParallelFor(num_envs_, [this](int i) {
-    worlds_[i]->Reset(EpisodeSeed(i), &observations_[static_cast<std::size_t>(i) * kObservationSize]);
+    worlds_[i]->Reset(EpisodeSeed(i),
+                      &observations_[static_cast<std::size_t>(i) * kObservationSize]);
     terminated_[i] = truncated_[i] = 0;
     rewards_[i] = 0.0f;
     finished_episodes_[i].reset();
@@ -42,7 +44,8 @@ void BatchedEnvironment::Reset() {
 }
 
 void BatchedEnvironment::Step(const float* actions) {
-  pool_->ParallelFor(num_envs_, [this, actions](int i) { StepWorld(i, actions + i * kActionSize); });
+  pool_->ParallelFor(num_envs_,
+                     [this, actions](int i) { StepWorld(i, actions + i * kActionSize); });
 }
 
 void BatchedEnvironment::StepWorld(int i, const float* action) {

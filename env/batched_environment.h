@@ -33,8 +33,10 @@ class BatchedEnvironment {
   /// observation and final_observations() the last observation of the finished episode.
   void Step(const float* actions);
 
-  const float* observations() const { return observations_.data(); }        ///< num_envs x 186
-  const float* final_observations() const { return final_observations_.data(); }  ///< valid where done
+  const float* observations() const { return observations_.data(); }  ///< num_envs x 186
+  const float* final_observations() const {
+    return final_observations_.data();
+  }  ///< valid where done
   const float* rewards() const { return rewards_.data(); }
   const std::uint8_t* terminated() const { return terminated_.data(); }
   const std::uint8_t* truncated() const { return truncated_.data(); }

@@ -7,10 +7,9 @@
 // managers for 28 obstacles that all move every step).
 #pragma once
 
+#include <Eigen/Core>
 #include <memory>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "env/obstacles.h"
 

@@ -4,9 +4,11 @@ namespace colav {
 
 void AddEnvironmentKeys(ConfigSchema& schema) {
   const EnvironmentConfig defaults;
-  schema.AddString("env.closeness", "linear",
-                   "range -> closeness: linear 1-d/150 (paper) or log 1-ln(1+d)/ln151 (reference code)",
-                   {"linear", "log"})
+  schema
+      .AddString(
+          "env.closeness", "linear",
+          "range -> closeness: linear 1-d/150 (paper) or log 1-ln(1+d)/ln151 (reference code)",
+          {"linear", "log"})
       .AddBool("env.test_mode", defaults.test_mode,
                "switch off the cumulative-reward termination (reference test procedure)")
       .AddInt("env.max_steps", defaults.max_steps, "steps before an episode is truncated", 1,
@@ -22,7 +24,7 @@ void AddEnvironmentKeys(ConfigSchema& schema) {
 EnvironmentConfig EnvironmentConfigFrom(const Config& config) {
   EnvironmentConfig env;
   env.closeness = config.GetString("env.closeness") == "log" ? ClosenessTransform::kLog
-                                                              : ClosenessTransform::kLinear;
+                                                             : ClosenessTransform::kLinear;
   env.test_mode = config.GetBool("env.test_mode");
   env.max_steps = config.GetInt("env.max_steps");
   env.goal_radius = config.GetDouble("env.goal_radius");

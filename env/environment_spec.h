@@ -39,14 +39,14 @@ struct EnvironmentConfig {
 
 /// Record of a finished episode (reference-simulator 9.1, plus goal reached).
 struct EpisodeMetrics {
-  double progress = 0.0;             ///< last instantaneous progress s*/L
-  double mean_abs_cte = 0.0;         ///< mean |cross-track error| over the steps (m)
-  std::int64_t steps = 0;            ///< number of steps taken
+  double progress = 0.0;      ///< last instantaneous progress s*/L
+  double mean_abs_cte = 0.0;  ///< mean |cross-track error| over the steps (m)
+  std::int64_t steps = 0;     ///< number of steps taken
   bool collision = false;
   bool goal_reached = false;
-  bool truncated = false;            ///< ended by the step limit
+  bool truncated = false;  ///< ended by the step limit
   double cumulative_reward = 0.0;
-  double path_length = 0.0;          ///< L (m)
+  double path_length = 0.0;  ///< L (m)
 };
 
 }  // namespace colav

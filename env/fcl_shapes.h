@@ -1,10 +1,10 @@
 // FCL shapes of the planar world: obstacles become vertical prisms through z = 0.
 #pragma once
 
-#include <memory>
-
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/math/geometry-inl.h>
+
+#include <memory>
 
 #include "env/obstacles.h"
 

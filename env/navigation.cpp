@@ -19,8 +19,8 @@ NavigationState Navigate(const Path& path, const Eigen::Vector2d& position, doub
       std::min(path.length(), nav.closest_arclength + kLookAheadDistance);
   nav.look_ahead_heading_error = WrapAngle(path.Direction(look_ahead_arclength) - heading);
   const Eigen::Vector2d target = path.Point(look_ahead_arclength);
-  nav.heading_error = WrapAngle(
-      std::atan2(target.y() - position.y(), target.x() - position.x()) - heading);
+  nav.heading_error =
+      WrapAngle(std::atan2(target.y() - position.y(), target.x() - position.x()) - heading);
   nav.progress = nav.closest_arclength / path.length();
   nav.goal_distance = (path.end() - position).norm();
   return nav;

@@ -1,9 +1,8 @@
 // Obstacle geometry: static circles and moving vessels (convex pentagon hulls).
 #pragma once
 
-#include <array>
-
 #include <Eigen/Core>
+#include <array>
 
 #include "env/scenario.h"
 

@@ -2,9 +2,8 @@
 // direction, and the reference's dense-polyline projection (reference-simulator 4.2-4.3).
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 #include "env/pchip.h"
 #include "env/polyline_projector.h"

@@ -2,9 +2,8 @@
 // PchipInterpolator slopes and evaluation (reference-simulator 4.2).
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace colav {
 

@@ -41,8 +41,8 @@ PolylineProjector::PolylineProjector(std::vector<Eigen::Vector2d> vertices)
   }
 }
 
-PolylineProjector::Candidate PolylineProjector::SegmentCandidate(
-    std::size_t segment, const Eigen::Vector2d& p) const {
+PolylineProjector::Candidate PolylineProjector::SegmentCandidate(std::size_t segment,
+                                                                 const Eigen::Vector2d& p) const {
   const Eigen::Vector2d& a = vertices_[segment];
   const Eigen::Vector2d& b = vertices_[segment + 1];
   const Eigen::Vector2d ab = b - a;

@@ -7,9 +7,8 @@
 // answer: blocks are pruned only when their lower bound is strictly worse.
 #pragma once
 
-#include <vector>
-
 #include <Eigen/Core>
+#include <vector>
 
 namespace colav {
 

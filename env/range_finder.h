@@ -4,10 +4,9 @@
 // only against the rays inside the angular interval its bounding circle subtends.
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "env/environment_spec.h"
 #include "env/obstacles.h"

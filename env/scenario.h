@@ -4,12 +4,11 @@
 // (TrainingScenarioGenerator) or a fixed scenario file (scenario_file.h).
 #pragma once
 
+#include <Eigen/Core>
 #include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 namespace colav {
 

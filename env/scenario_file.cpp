@@ -1,10 +1,10 @@
 #include "env/scenario_file.h"
 
+#include <yaml-cpp/yaml.h>
+
 #include <cmath>
 #include <iomanip>
 #include <sstream>
-
-#include <yaml-cpp/yaml.h>
 
 #include "src/error.h"
 #include "src/yaml_file.h"
@@ -59,15 +59,16 @@ class ScenarioReader {
 
   void Vessel(const YAML::Node& root, Scenario& scenario) const {
     const YAML::Node vessel = Required(root, "vessel", "vessel");
-    scenario.vessel_position = Point(Required(vessel, "position", "vessel.position"),
-                                     "vessel.position");
-    scenario.vessel_heading = Number(Required(vessel, "heading", "vessel.heading"),
-                                     "vessel.heading");
+    scenario.vessel_position =
+        Point(Required(vessel, "position", "vessel.position"), "vessel.position");
+    scenario.vessel_heading =
+        Number(Required(vessel, "heading", "vessel.heading"), "vessel.heading");
     if (const YAML::Node velocity = vessel["velocity"]) {
       if (!velocity.IsSequence() || velocity.size() != 3) {
         Fail("vessel.velocity", "expects [u, v, r]");
       }
-      for (int k = 0; k < 3; ++k) scenario.vessel_velocity[k] = Number(velocity[k], "vessel.velocity");
+      for (int k = 0; k < 3; ++k)
+        scenario.vessel_velocity[k] = Number(velocity[k], "vessel.velocity");
     }
   }
 

@@ -95,23 +95,27 @@ void PlotScene(const Scenario& scenario, const std::vector<SceneTrack>& tracks, 
                const std::filesystem::path& png, const std::string& title,
                const std::string& colour_label) {
   std::ostringstream script;
-  script << DataBlocks(scenario, tracks, steps) << ViewRange(scenario, tracks)
-         << "set size ratio -1\nset grid lc rgb '#dddddd'\nset key outside bottom center horizontal\n"
-         << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset title " << GnuplotQuote(title) << "\n";
+  script
+      << DataBlocks(scenario, tracks, steps) << ViewRange(scenario, tracks)
+      << "set size ratio -1\nset grid lc rgb '#dddddd'\nset key outside bottom center horizontal\n"
+      << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset title " << GnuplotQuote(title) << "\n";
   bool coloured = false;
   for (const SceneTrack& track : tracks) coloured |= !track.colour_values.empty();
   if (coloured) {
     script << "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\n"
            << "set cblabel " << GnuplotQuote(colour_label) << "\n";
   }
-  script << "plot $static with filledcurves lc rgb '#7f7f7f' fs transparent solid 0.6 title 'static obstacles', \\\n"
+  script << "plot $static with filledcurves lc rgb '#7f7f7f' fs transparent solid 0.6 title "
+            "'static obstacles', \\\n"
          << "  $start_hulls with lines lc rgb '#e08214' dt 2 title 'vessels at start', \\\n"
-         << "  $end_hulls with filledcurves lc rgb '#e08214' fs transparent solid 0.5 title 'vessels at end', \\\n"
+         << "  $end_hulls with filledcurves lc rgb '#e08214' fs transparent solid 0.5 title "
+            "'vessels at end', \\\n"
          << "  $path with lines lw 2 lc rgb '#1a9850' title 'path'";
   for (std::size_t t = 0; t < tracks.size(); ++t) {
     const SceneTrack& track = tracks[t];
     script << ", \\\n  $track" << t << " using 1:2"
-           << (track.colour_values.empty() ? " with lines lw 2 lc rgb '#2166ac'" : ":3 with lines lw 2 lc palette")
+           << (track.colour_values.empty() ? " with lines lw 2 lc rgb '#2166ac'"
+                                           : ":3 with lines lw 2 lc palette")
            << " title " << GnuplotQuote(track.label);
     if (track.collision && !track.positions.empty()) {
       script << ", \\\n  $track" << t << " every ::" << track.positions.size() - 1
@@ -119,7 +123,8 @@ void PlotScene(const Scenario& scenario, const std::vector<SceneTrack>& tracks, 
     }
   }
   script << ", \\\n  '+' using (" << scenario.vessel_position.x() << "):("
-         << scenario.vessel_position.y() << ") every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start'\n";
+         << scenario.vessel_position.y()
+         << ") every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start'\n";
   RenderGnuplotPng(script.str(), png);
 }
 

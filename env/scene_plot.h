@@ -1,11 +1,10 @@
 // Pictures of a scene: path, obstacles at the start and the end, vessel tracks, collisions.
 #pragma once
 
+#include <Eigen/Core>
 #include <filesystem>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "env/scenario.h"
 

@@ -41,8 +41,8 @@ std::string TraceRow(std::int64_t step, const World& world, const StepResult& re
   const VesselState& vessel = world.vessel();
   for (int k = 0; k < 6; ++k) AppendNumber(row, vessel[k]);
   const NavigationState& nav = world.navigation();
-  for (const double value : {nav.cross_track_error, nav.heading_error,
-                             nav.look_ahead_heading_error, nav.progress, result.reward}) {
+  for (const double value : {nav.cross_track_error, nav.heading_error, nav.look_ahead_heading_error,
+                             nav.progress, result.reward}) {
     AppendNumber(row, value);
   }
   for (const bool flag : {result.terminated, result.truncated, world.collision()}) {

@@ -68,10 +68,10 @@ std::vector<Eigen::Vector2d> RandomWaypoints(Rng& rng, double length) {
   for (int w = 0; w < k; ++w) {
     const double scale = length / (k + 1);
     // The same scalar offset on both axes, as the reference.
-    const Eigen::Vector2d p1 = (k - w) * start / (k + 1) +
-                               scale * (Uniform01(rng) - 0.5) * Eigen::Vector2d::Ones();
-    const Eigen::Vector2d p2 = (k - w) * end / (k + 1) +
-                               scale * (Uniform01(rng) - 0.5) * Eigen::Vector2d::Ones();
+    const Eigen::Vector2d p1 =
+        (k - w) * start / (k + 1) + scale * (Uniform01(rng) - 0.5) * Eigen::Vector2d::Ones();
+    const Eigen::Vector2d p2 =
+        (k - w) * end / (k + 1) + scale * (Uniform01(rng) - 0.5) * Eigen::Vector2d::Ones();
     std::vector<Eigen::Vector2d> next(waypoints.begin(), waypoints.begin() + w + 1);
     next.insert(next.end(), {p1, Eigen::Vector2d::Zero(), p2});
     next.insert(next.end(), waypoints.end() - (w + 1), waypoints.end());
@@ -94,7 +94,8 @@ Placement PlaceObstacle(Rng& rng, const Path& path, const Eigen::Vector2d& vesse
     const double s = (0.1 + 0.8 * Uniform01(rng)) * path.length();
     const double normal_angle = WrapAngle(path.Direction(s) - kPi / 2.0);
     const Eigen::Vector2d position =
-        path.Point(s) + displacement * Eigen::Vector2d(std::cos(normal_angle), std::sin(normal_angle));
+        path.Point(s) +
+        displacement * Eigen::Vector2d(std::cos(normal_angle), std::sin(normal_angle));
     const double size = std::max<double>(1.0, static_cast<double>(Poisson(rng, size_mean)));
     const double vessel_clearance =
         (position - vessel_position).norm() - CybershipModel::kRadius - size;
@@ -135,9 +136,9 @@ Scenario TrainingScenarioGenerator::Make(std::uint64_t seed) const {
     obstacle.width = placement.size;
     obstacle.course = 2.0 * kPi * Uniform01(rng);
     obstacle.speed = MovingObstacleSpeed(Uniform01(rng));
-    obstacle.position = placement.position + kObstacleLeadTime * obstacle.speed *
-                                                 Eigen::Vector2d(std::cos(obstacle.course),
-                                                                 std::sin(obstacle.course));
+    obstacle.position = placement.position +
+                        kObstacleLeadTime * obstacle.speed *
+                            Eigen::Vector2d(std::cos(obstacle.course), std::sin(obstacle.course));
     scenario.dynamic_obstacles.push_back(obstacle);
   }
   for (int k = 0; k < config_.num_static; ++k) {

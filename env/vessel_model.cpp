@@ -1,9 +1,8 @@
 #include "env/vessel_model.h"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-
-#include <Eigen/LU>
 
 #include "env/angles.h"
 
@@ -43,8 +42,8 @@ constexpr double kM23 = kMass * kXg - kYrdot;
 const Eigen::Matrix3d& InverseMassMatrix() {
   static const Eigen::Matrix3d inverse = [] {
     Eigen::Matrix3d m;
-    m << kM11, 0.0, 0.0,                                //
-        0.0, kMass - kYvdot, kMass * kXg - kYrdot,      //
+    m << kM11, 0.0, 0.0,                            //
+        0.0, kMass - kYvdot, kMass * kXg - kYrdot,  //
         0.0, kMass * kXg - kNvdot, kIz - kNrdot;
     return Eigen::Matrix3d(m.inverse());
   }();
@@ -85,18 +84,17 @@ VesselState CybershipModel::Step(const VesselState& s, const GeneralisedForce& t
   const VesselState k1 = Derivative(s, tau);
   const VesselState k2 = Derivative(s + h * k1 / 4.0, tau);
   const VesselState k3 = Derivative(s + 3.0 * h * k1 / 32.0 + 9.0 * h * k2 / 32.0, tau);
-  const VesselState k4 = Derivative(s + 1932.0 * h * k1 / 2197.0 - 7200.0 * h * k2 / 2197.0 +
-                                        7296.0 * h * k3 / 2197.0,
-                                    tau);
-  const VesselState k5 = Derivative(s + 439.0 * h * k1 / 216.0 - 8.0 * h * k2 +
-                                        3680.0 * h * k3 / 513.0 - 845.0 * h * k4 / 4104.0,
-                                    tau);
+  const VesselState k4 = Derivative(
+      s + 1932.0 * h * k1 / 2197.0 - 7200.0 * h * k2 / 2197.0 + 7296.0 * h * k3 / 2197.0, tau);
+  const VesselState k5 = Derivative(
+      s + 439.0 * h * k1 / 216.0 - 8.0 * h * k2 + 3680.0 * h * k3 / 513.0 - 845.0 * h * k4 / 4104.0,
+      tau);
   const VesselState k6 =
       Derivative(s - 8.0 * h * k1 / 27.0 + 2.0 * h * k2 - 3544.0 * h * k3 / 2565.0 +
                      1859.0 * h * k4 / 4104.0 - 11.0 * h * k5 / 40.0,
                  tau);
-  VesselState next = s + h * (16.0 * k1 / 135.0 + 6656.0 * k3 / 12825.0 +
-                              28561.0 * k4 / 56430.0 - 9.0 * k5 / 50.0 + 2.0 * k6 / 55.0);
+  VesselState next = s + h * (16.0 * k1 / 135.0 + 6656.0 * k3 / 12825.0 + 28561.0 * k4 / 56430.0 -
+                              9.0 * k5 / 50.0 + 2.0 * k6 / 55.0);
   next[2] = WrapAngle(next[2]);
   return next;
 }

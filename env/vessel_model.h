@@ -14,10 +14,10 @@ using GeneralisedForce = Eigen::Vector3d;
 
 /// Constant description of the Cybership II model.
 struct CybershipModel {
-  static constexpr double kMaxThrust = 2.0;     ///< N, forward only
-  static constexpr double kMaxMoment = 0.15;    ///< N m
-  static constexpr double kRadius = 1.255;      ///< m, collision disc ("vessel_width")
-  static constexpr double kMaxSpeed = 0.57;     ///< m/s, reward normalisation
+  static constexpr double kMaxThrust = 2.0;   ///< N, forward only
+  static constexpr double kMaxMoment = 0.15;  ///< N m
+  static constexpr double kRadius = 1.255;    ///< m, collision disc ("vessel_width")
+  static constexpr double kMaxSpeed = 0.57;   ///< m/s, reward normalisation
 
   /// Forces of an agent action a in [-1, 1]^2 (clipped): thrust (a0+1)/2 * 2 N, moment
   /// a1 * 0.15 N m; a NaN component makes the whole action zero, as in the reference.

@@ -47,8 +47,8 @@ void RenderGnuplotPng(const std::string& script, const std::filesystem::path& pn
           << " enhanced font 'Sans,10'\nset output " << GnuplotQuote(temporary.string()) << "\n"
           << script << "\nset output\n";
     }
-    const std::string command = "gnuplot " + ShellQuote(script_path.string()) + " 2> " +
-                                ShellQuote(log_path.string());
+    const std::string command =
+        "gnuplot " + ShellQuote(script_path.string()) + " 2> " + ShellQuote(log_path.string());
     const int status = std::system(command.c_str());
     std::string first_error;
     {

@@ -3,7 +3,6 @@
 // and (b) through FCL's dynamic AABB-tree broad-phase manager, updated every step because the
 // 17 vessels move. Decides which one CollisionChecker uses.
 #include <benchmark/benchmark.h>
-
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/broadphase/default_broadphase_callbacks.h>
 #include <fcl/narrowphase/collision_object.h>
@@ -45,7 +44,8 @@ void BM_DynamicAabbTreeManager(benchmark::State& state) {
   }
   const std::size_t first_vessel = objects.size();
   for (const MovingObstacle& v : world.vessels) {
-    objects.push_back(std::make_unique<fcl::CollisionObjectd>(FclPrism(v.hull()), PlanarTransform(v.hull().bound_center)));
+    objects.push_back(std::make_unique<fcl::CollisionObjectd>(
+        FclPrism(v.hull()), PlanarTransform(v.hull().bound_center)));
   }
   for (auto& o : objects) manager.registerObject(o.get());
   manager.setup();

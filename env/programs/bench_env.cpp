@@ -1,7 +1,6 @@
 // bench_env: environment throughput (steps per second), single-threaded and batched, plus the
 // cost of the hot-path pieces. Ends with the headline lines of shared/spec/interfaces.md.
 #include <CLI/CLI.hpp>
-
 #include <chrono>
 #include <cstdio>
 #include <functional>
@@ -92,4 +91,6 @@ int BenchEnv(int argc, char** argv) {
 }  // namespace
 }  // namespace colav
 
-int main(int argc, char** argv) { return colav::RunProgram("bench_env", argc, argv, colav::BenchEnv); }
+int main(int argc, char** argv) {
+  return colav::RunProgram("bench_env", argc, argv, colav::BenchEnv);
+}

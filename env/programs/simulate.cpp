@@ -1,7 +1,6 @@
 // simulate: replays a scenario file under an action sequence and writes the per-step trace
 // (shared/spec/interfaces.md), optionally a picture of the scene.
 #include <CLI/CLI.hpp>
-
 #include <iostream>
 
 #include "env/environment.h"
@@ -36,8 +35,9 @@ int Simulate(int argc, char** argv) {
   std::uint64_t training_seed = 0;
   std::string save_scenario_path;
   auto* scenario_option = app.add_option("--scenario", scenario_path, "scenario file (YAML)");
-  auto* seed_option = app.add_option("--training-seed", training_seed,
-                                     "instead of --scenario: the paper's training world of this seed");
+  auto* seed_option =
+      app.add_option("--training-seed", training_seed,
+                     "instead of --scenario: the paper's training world of this seed");
   scenario_option->excludes(seed_option);
   app.add_option("--save-scenario", save_scenario_path,
                  "also write the scenario as a scenario file (e.g. to edit a training world)");
@@ -55,7 +55,8 @@ int Simulate(int argc, char** argv) {
   const Scenario scenario = seed_option->count() > 0
                                 ? TrainingScenarioGenerator().Make(training_seed)
                                 : LoadScenarioFile(scenario_path);
-  if (!save_scenario_path.empty()) WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
+  if (!save_scenario_path.empty())
+    WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
   const auto actions = LoadActionsFile(actions_path);
   Environment env(EnvironmentConfigFrom(config), std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
@@ -81,4 +82,6 @@ int Simulate(int argc, char** argv) {
 }  // namespace
 }  // namespace colav
 
-int main(int argc, char** argv) { return colav::RunProgram("simulate", argc, argv, colav::Simulate); }
+int main(int argc, char** argv) {
+  return colav::RunProgram("simulate", argc, argv, colav::Simulate);
+}

@@ -53,8 +53,8 @@ TEST(CollisionChecker, MovingHullMatchesAnalyticDistance) {
   Rng rng(5);
   for (int step = 0; step < 3; ++step) {
     for (int k = 0; k < 1500; ++k) {
-      const Eigen::Vector2d p = vessels[0].position() +
-                                Eigen::Vector2d(Uniform(rng, -16, 16), Uniform(rng, -16, 16));
+      const Eigen::Vector2d p =
+          vessels[0].position() + Eigen::Vector2d(Uniform(rng, -16, 16), Uniform(rng, -16, 16));
       const double clearance = PolygonDistance(vessels[0].hull(), p) - kRadius;
       if (std::fabs(clearance) < 1e-4) continue;
       ASSERT_EQ(checker.Collides(p, vessels), clearance < 0.0)

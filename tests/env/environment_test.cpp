@@ -55,8 +55,8 @@ TEST(Environment, ObservationLayoutAtReset) {
 TEST(Environment, GoalByDistanceEndsEpisode) {
   Scenario s = StraightScenario(100.0);
   s.vessel_position = {95.5, 0.0};
-  Environment env = MakeEnvironment(s, EnvironmentConfig{ClosenessTransform::kLinear, false, 2000,
-                                                         5.0, 2.0, -2000.0});
+  Environment env = MakeEnvironment(
+      s, EnvironmentConfig{ClosenessTransform::kLinear, false, 2000, 5.0, 2.0, -2000.0});
   std::vector<float> obs(kObservationSize);
   env.Reset(0, obs.data());
   const double action[2] = {-1.0, 0.0};  // no thrust: stays within 5 m

@@ -1,9 +1,10 @@
 // PCHIP, path smoothing, projection and guidance errors.
+#include "env/path.h"
+
 #include <gtest/gtest.h>
 
 #include "env/angles.h"
 #include "env/navigation.h"
-#include "env/path.h"
 #include "env/pchip.h"
 #include "src/random.h"
 

@@ -1,10 +1,11 @@
 // Ray intersections and the range-finder against analytic geometry.
+#include "env/range_finder.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "env/angles.h"
-#include "env/range_finder.h"
 #include "env/ray_geometry.h"
 
 namespace colav {
@@ -15,10 +16,10 @@ const Eigen::Vector2d kEast(1.0, 0.0);
 
 TEST(RayCircle, HitInsideTangentBehindOutOfRange) {
   EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {50, 0}, 10, 150), 40.0);
-  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {5, 0}, 10, 150), 0.0);     // inside
-  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {50, 10}, 10, 150), 50.0);  // tangent
-  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {-50, 0}, 10, 150), 150.0); // behind
-  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {170, 0}, 10, 150), 150.0); // too far
+  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {5, 0}, 10, 150), 0.0);          // inside
+  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {50, 10}, 10, 150), 50.0);       // tangent
+  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {-50, 0}, 10, 150), 150.0);      // behind
+  EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {170, 0}, 10, 150), 150.0);      // too far
   EXPECT_DOUBLE_EQ(RayCircleDistance(kOrigin, kEast, {50, 10.001}, 10, 150), 150.0);  // miss
   // Off-axis chord: x = 30 - sqrt(100 - 36) = 22.
   EXPECT_NEAR(RayCircleDistance(kOrigin, kEast, {30, 6}, 10, 150), 22.0, 1e-12);
@@ -57,8 +58,8 @@ TEST(RangeFinder, RayAnglesMatchReference) {
 
 TEST(RangeFinder, CullingGivesTheSameAsTestingEveryRay) {
   const RangeFinder finder;
-  const std::vector<CircleSpec> circles = {{{30, 40}, 12}, {{-100, 20}, 30}, {{0, -149}, 5},
-                                           {{2, 1}, 1}};
+  const std::vector<CircleSpec> circles = {
+      {{30, 40}, 12}, {{-100, 20}, 30}, {{0, -149}, 5}, {{2, 1}, 1}};
   const ConvexPolygon hull = VesselHull({-20, -60}, 14, 1.0);
   const ConvexPolygon hull2 = VesselHull({140, 10}, 20, -2.0);
   std::array<double, kNumRays> ranges{};

@@ -2,8 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <set>
 #include <fstream>
+#include <set>
 
 #include "env/path.h"
 #include "env/scenario_file.h"
@@ -126,7 +126,8 @@ TEST(TrainingScenario, PaperCountsAndPlacementRules) {
   }
   // The number of waypoints is drawn per episode: both layouts occur.
   std::set<std::size_t> layouts;
-  for (std::uint64_t seed = 0; seed < 40; ++seed) layouts.insert(generator.Make(seed).waypoints.size());
+  for (std::uint64_t seed = 0; seed < 40; ++seed)
+    layouts.insert(generator.Make(seed).waypoints.size());
   EXPECT_EQ(layouts.size(), 2U);
 }
 
