@@ -69,7 +69,7 @@ PchipCurve::PchipCurve(std::vector<double> knots, const std::vector<Eigen::Vecto
   for (std::size_t k = 0; k + 1 < n; ++k) {
     // CubicHermiteSpline coefficients, in scipy's operation order.
     const double h = knots_[k + 1] - knots_[k];
-    const Eigen::Vector2d y0 = points[k];
+    const Eigen::Vector2d& y0 = points[k];
     const Eigen::Vector2d slope = (points[k + 1] - points[k]) / h;
     const Eigen::Vector2d d0(dx[k], dy[k]);
     const Eigen::Vector2d d1(dx[k + 1], dy[k + 1]);

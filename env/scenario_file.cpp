@@ -67,8 +67,9 @@ class ScenarioReader {
       if (!velocity.IsSequence() || velocity.size() != 3) {
         Fail("vessel.velocity", "expects [u, v, r]");
       }
-      for (int k = 0; k < 3; ++k)
+      for (int k = 0; k < 3; ++k) {
         scenario.vessel_velocity[k] = Number(velocity[k], "vessel.velocity");
+      }
     }
   }
 

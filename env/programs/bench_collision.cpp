@@ -27,7 +27,7 @@ void BM_CullThenDirectFcl(benchmark::State& state) {
   World world;
   CollisionChecker checker(CybershipModel::kRadius);
   checker.Load(world.scenario.static_obstacles, world.vessels);
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): benchmark idiom
     for (MovingObstacle& v : world.vessels) v.Advance(1.0);
     benchmark::DoNotOptimize(checker.Collides(world.scenario.vessel_position, world.vessels));
   }
@@ -51,7 +51,7 @@ void BM_DynamicAabbTreeManager(benchmark::State& state) {
   manager.setup();
   fcl::CollisionObjectd disc(std::make_shared<fcl::Sphered>(CybershipModel::kRadius),
                              PlanarTransform(world.scenario.vessel_position));
-  for (auto _ : state) {
+  for (auto _ : state) {  // NOLINT(clang-analyzer-deadcode.DeadStores): benchmark idiom
     for (std::size_t k = 0; k < world.vessels.size(); ++k) {
       world.vessels[k].Advance(1.0);
       const Eigen::Vector2d& c = world.vessels[k].hull().bound_center;

@@ -55,8 +55,9 @@ int Simulate(int argc, char** argv) {
   const Scenario scenario = seed_option->count() > 0
                                 ? TrainingScenarioGenerator().Make(training_seed)
                                 : LoadScenarioFile(scenario_path);
-  if (!save_scenario_path.empty())
+  if (!save_scenario_path.empty()) {
     WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
+  }
   const auto actions = LoadActionsFile(actions_path);
   Environment env(EnvironmentConfigFrom(config), std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
@@ -67,7 +68,7 @@ int Simulate(int argc, char** argv) {
   for (const auto& action : actions) {
     const StepResult result = env.Step(action.data(), observation.data());
     trace += TraceRow(++step, env.world(), result) + "\n";
-    track.positions.push_back(env.world().vessel().head<2>());
+    track.positions.emplace_back(env.world().vessel().head<2>());
     track.collision = result.collision;
     if (result.terminated || result.truncated) break;
   }
