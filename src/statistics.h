@@ -1,0 +1,33 @@
+// Summary statistics of repeated measurements (VAE seeds, evaluation episodes): mean, sample
+// standard deviation and the Student-t 95 % confidence interval of the mean, as the paper reports
+// them (reference-learning 7.2: t with n - 1 degrees of freedom, scale = sd / sqrt(n), ddof 1).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace colav {
+
+double Mean(const std::vector<double>& values);
+/// Sample standard deviation (n - 1 in the denominator); 0 for fewer than two values.
+double SampleStandardDeviation(const std::vector<double>& values);
+
+/// Student-t CDF with `dof` > 0 degrees of freedom.
+double StudentTCdf(double t, double dof);
+/// The p-quantile (0 < p < 1) of the Student-t distribution with `dof` > 0 degrees of freedom.
+double StudentTQuantile(double p, double dof);
+
+/// Mean with its two-sided confidence interval mean +- t_{(1+level)/2, n-1} * sd / sqrt(n).
+struct MeanConfidenceInterval {
+  std::size_t count = 0;
+  double mean = 0.0;
+  double sd = 0.0;          ///< sample standard deviation
+  double half_width = 0.0;  ///< 0 for fewer than two values (no spread to estimate)
+  double low = 0.0;
+  double high = 0.0;
+};
+
+/// The summary of `values` (not empty; std::invalid_argument otherwise).
+MeanConfidenceInterval Summarise(const std::vector<double>& values, double level = 0.95);
+
+}  // namespace colav
