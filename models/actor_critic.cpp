@@ -1,0 +1,121 @@
+#include "models/actor_critic.h"
+
+#include <cmath>
+
+#include "env/environment_spec.h"
+
+namespace colav {
+namespace {
+
+// SB3 ortho_init gains: hidden layers, action head, value head.
+const double kTrunkGain = std::sqrt(2.0);
+constexpr double kActionGain = 0.01;
+constexpr double kValueGain = 1.0;
+
+torch::nn::Sequential TanhMlp(std::int64_t in_features, const std::vector<std::int64_t>& sizes) {
+  torch::nn::Sequential mlp;
+  for (const std::int64_t size : sizes) {
+    mlp->push_back(torch::nn::Linear(in_features, size));
+    mlp->push_back(torch::nn::Tanh());
+    in_features = size;
+  }
+  return mlp;
+}
+
+void InitLinear(torch::nn::Linear& linear, double gain, torch::Generator& generator) {
+  OrthogonalInit(linear->weight, gain, generator);
+  linear->bias.zero_();
+}
+
+void InitTrunk(torch::nn::Sequential& mlp, torch::Generator& generator) {
+  for (auto& module : mlp->children()) {
+    if (auto linear = std::dynamic_pointer_cast<torch::nn::LinearImpl>(module)) {
+      torch::nn::Linear holder(linear);
+      InitLinear(holder, kTrunkGain, generator);
+    }
+  }
+}
+
+// PyTorch's default Conv1d initialisation (kaiming_uniform with a = sqrt(5), i.e.
+// U(+-1/sqrt(fan_in)) for weight and bias), drawn from `generator` instead of the global one.
+void DefaultConvInit(torch::nn::Conv1d& conv, torch::Generator& generator) {
+  const double bound = 1.0 / std::sqrt(static_cast<double>(conv->weight[0].numel()));
+  conv->weight.uniform_(-bound, bound, generator);
+  conv->bias.uniform_(-bound, bound, generator);
+}
+
+}  // namespace
+
+void OrthogonalInit(torch::Tensor weight, double gain, torch::Generator& generator) {
+  torch::NoGradGuard no_grad;
+  const std::int64_t rows = weight.size(0);
+  const std::int64_t columns = weight.numel() / rows;
+  torch::Tensor flat = torch::randn({rows, columns}, generator);
+  if (rows < columns) flat = flat.t();
+  auto [q, r] = torch::linalg_qr(flat);
+  q = q * torch::diagonal(r).sign();  // makes the decomposition unique (uniform over O(n))
+  if (rows < columns) q = q.t();
+  weight.copy_(q.reshape(weight.sizes()) * gain);
+}
+
+MlpExtractorImpl::MlpExtractorImpl(std::int64_t features_dim,
+                                   const std::vector<std::int64_t>& hidden_sizes) {
+  policy_net = register_module("policy_net", TanhMlp(features_dim, hidden_sizes));
+  value_net = register_module("value_net", TanhMlp(features_dim, hidden_sizes));
+}
+
+ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::move(options)) {
+  TORCH_CHECK(!options_.hidden_sizes.empty(), "the actor and critic need a hidden layer");
+  features_extractor_ = register_module("features_extractor", FeatureExtractor(options_.extractor));
+  const std::int64_t features_dim = features_extractor_->features_dim();
+  mlp_extractor_ =
+      register_module("mlp_extractor", MlpExtractor(features_dim, options_.hidden_sizes));
+  const std::int64_t latent = options_.hidden_sizes.back();
+  action_net_ = register_module("action_net", torch::nn::Linear(latent, kActionSize));
+  value_net_ = register_module("value_net", torch::nn::Linear(latent, 1));
+  log_std_ = register_parameter("log_std", torch::full({kActionSize}, options_.log_std_init));
+  Initialise();
+}
+
+void ActorCriticImpl::Initialise() {
+  torch::NoGradGuard no_grad;
+  auto generator = at::make_generator<at::CPUGeneratorImpl>(options_.seed);
+  if (options_.extractor.kind == ExtractorKind::kBaseline) {
+    for (const PerceptionLayer& layer : features_extractor_->layers()) {
+      torch::nn::Conv1d conv = layer.conv;
+      DefaultConvInit(conv, generator);
+    }
+  }
+  InitTrunk(mlp_extractor_->policy_net, generator);
+  InitTrunk(mlp_extractor_->value_net, generator);
+  InitLinear(action_net_, kActionGain, generator);
+  InitLinear(value_net_, kValueGain, generator);
+}
+
+std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
+    const torch::Tensor& observations) {
+  const torch::Tensor features = features_extractor_->forward(observations);
+  return {action_net_->forward(mlp_extractor_->policy_net->forward(features)),
+          value_net_->forward(mlp_extractor_->value_net->forward(features))};
+}
+
+std::pair<DiagonalGaussian, torch::Tensor> ActorCriticImpl::DistributionAndValue(
+    const torch::Tensor& observations) {
+  auto [mean, value] = forward(observations);
+  return {DiagonalGaussian{mean, log_std_}, value};
+}
+
+torch::Tensor ActorCriticImpl::Value(const torch::Tensor& observations) {
+  return value_net_->forward(
+      mlp_extractor_->value_net->forward(features_extractor_->forward(observations)));
+}
+
+std::vector<torch::Tensor> ActorCriticImpl::TrainableParameters() const {
+  std::vector<torch::Tensor> trainable;
+  for (const torch::Tensor& parameter : parameters()) {
+    if (parameter.requires_grad()) trainable.push_back(parameter);
+  }
+  return trainable;
+}
+
+}  // namespace colav

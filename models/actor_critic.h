@@ -1,0 +1,81 @@
+// The PPO agent's actor-critic (Stable-Baselines3 ActorCriticPolicy with the paper's net_arch,
+// reference-learning 6.3): one feature extractor shared by actor and critic, then separate Tanh
+// MLPs (default [128, 64, 32]); the actor's Linear head gives the mean of a diagonal Gaussian with
+// a state-independent log std (init 0), the critic's gives the state value.
+//
+// Initialisation (SB3 ortho_init): trunks orthogonal with gain sqrt(2), action head 0.01, value
+// head 1, biases 0. Unlike the reference (reference-learning 6.2), the pre-trained encoder keeps
+// its weights; the baseline's conv keeps PyTorch's default initialisation. Every random draw comes
+// from a generator seeded by ActorCriticOptions::seed.
+//
+// Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
+// mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std.
+#pragma once
+
+#include <torch/torch.h>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "models/diagonal_gaussian.h"
+#include "models/feature_extractor.h"
+
+namespace colav {
+
+struct ActorCriticOptions {
+  FeatureExtractorOptions extractor;
+  std::vector<std::int64_t> hidden_sizes = {128, 64, 32};
+  double log_std_init = 0.0;
+  std::uint64_t seed = 0;  ///< seeds the initialisation
+};
+
+/// The two separate trunks (SB3's MlpExtractor).
+class MlpExtractorImpl : public torch::nn::Module {
+ public:
+  MlpExtractorImpl(std::int64_t features_dim, const std::vector<std::int64_t>& hidden_sizes);
+
+  torch::nn::Sequential policy_net{nullptr};  ///< Linear, Tanh, Linear, Tanh, ...
+  torch::nn::Sequential value_net{nullptr};
+};
+TORCH_MODULE(MlpExtractor);
+
+class ActorCriticImpl : public torch::nn::Module {
+ public:
+  explicit ActorCriticImpl(ActorCriticOptions options);
+
+  /// observations [B, 186] -> (action mean [B, 2], value [B, 1]).
+  std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
+  /// The Gaussian over actions and the value of observations.
+  std::pair<DiagonalGaussian, torch::Tensor> DistributionAndValue(
+      const torch::Tensor& observations);
+  /// value [B, 1] of observations.
+  torch::Tensor Value(const torch::Tensor& observations);
+
+  /// The parameters the optimiser updates: all but those of a locked encoder, in module order.
+  std::vector<torch::Tensor> TrainableParameters() const;
+
+  const ActorCriticOptions& options() const { return options_; }
+  FeatureExtractor& features_extractor() { return features_extractor_; }
+  MlpExtractor& mlp_extractor() { return mlp_extractor_; }
+  torch::nn::Linear& action_net() { return action_net_; }
+  torch::nn::Linear& value_net() { return value_net_; }
+  torch::Tensor& log_std() { return log_std_; }
+
+ private:
+  void Initialise();
+
+  ActorCriticOptions options_;
+  FeatureExtractor features_extractor_{nullptr};
+  MlpExtractor mlp_extractor_{nullptr};
+  torch::nn::Linear action_net_{nullptr};
+  torch::nn::Linear value_net_{nullptr};
+  torch::Tensor log_std_;
+};
+TORCH_MODULE(ActorCritic);
+
+/// Fills `weight` (rows = dim 0) with a random orthogonal matrix times `gain`, drawn from
+/// `generator` (torch.nn.init.orthogonal_'s algorithm).
+void OrthogonalInit(torch::Tensor weight, double gain, torch::Generator& generator);
+
+}  // namespace colav

@@ -1,0 +1,256 @@
+#include "models/actor_critic_fast.h"
+
+#include <algorithm>
+
+#include "env/environment_spec.h"
+
+namespace colav {
+namespace {
+
+float* Data(const torch::Tensor& tensor) { return tensor.data_ptr<float>(); }
+
+std::vector<torch::Tensor> ZerosLike(const std::vector<torch::Tensor>& tensors) {
+  std::vector<torch::Tensor> zeros;
+  for (const torch::Tensor& tensor : tensors) zeros.push_back(torch::zeros_like(tensor));
+  return zeros;
+}
+
+void Activate(FastLayer::Activation activation, float* x, int n) {
+  if (activation == FastLayer::Activation::kTanh) kernels::TanhInPlace(x, n);
+  if (activation == FastLayer::Activation::kRelu) kernels::ReluInPlace(x, n);
+}
+
+void ActivationBackward(FastLayer::Activation activation, float* grad, const float* y, int n) {
+  if (activation == FastLayer::Activation::kTanh) kernels::TanhBackwardInPlace(grad, y, n);
+  if (activation == FastLayer::Activation::kRelu) kernels::ReluBackwardInPlace(grad, y, n);
+}
+
+kernels::CircularConvShape ConvShape(const torch::nn::detail::ConvNdOptions<1>& options,
+                                     int length) {
+  TORCH_CHECK(c10::holds_alternative<torch::enumtype::kCircular>(options.padding_mode()) &&
+                  (*options.dilation())[0] == 1 && options.groups() == 1,
+              "FastActorCritic supports circular, undilated, ungrouped convolutions only");
+  const auto& padding = c10::get<torch::ExpandingArray<1>>(options.padding());
+  return {static_cast<int>(options.in_channels()),
+          static_cast<int>(options.out_channels()),
+          static_cast<int>((*options.kernel_size())[0]),
+          static_cast<int>((*options.stride())[0]),
+          static_cast<int>((*padding)[0]),
+          length};
+}
+
+// Transposes `count` rows of `width` values (row-major) into feature-major [width, count].
+void GatherRows(const float* const* rows, int count, int offset, int width, float* out) {
+  for (int b = 0; b < count; ++b) {
+    const float* row = rows[b] + offset;
+    for (int i = 0; i < width; ++i) out[i * count + b] = row[i];
+  }
+}
+
+}  // namespace
+
+FastLayerStack::FastLayerStack(std::vector<FastLayer> layers, int max_batch)
+    : layers_(std::move(layers)) {
+  int widest = 0;
+  for (const FastLayer& layer : layers_) {
+    outputs_.emplace_back(static_cast<std::size_t>(layer.out_size) * max_batch);
+    widest = std::max({widest, layer.in_size, layer.out_size});
+  }
+  gradient_a_.resize(static_cast<std::size_t>(widest) * max_batch);
+  gradient_b_.resize(gradient_a_.size());
+  transposed_.resize(gradient_a_.size());
+}
+
+const float* FastLayerStack::Forward(const float* input, int B) {
+  const float* x = input;
+  for (std::size_t i = 0; i < layers_.size(); ++i) {
+    const FastLayer& layer = layers_[i];
+    float* y = outputs_[i].data();
+    if (layer.kind == FastLayer::Kind::kLinear) {
+      kernels::LinearForward(Data(layer.weight), Data(layer.bias), x, layer.in_size, layer.out_size,
+                             B, y);
+    } else {
+      kernels::CircularConvForward(layer.conv, Data(layer.weight), Data(layer.bias), x, B, y);
+    }
+    Activate(layer.activation, y, layer.out_size * B);
+    x = y;
+  }
+  return x;
+}
+
+void FastLayerStack::Backward(const float* input, float* d_output, int B, float* d_input) {
+  float* dy = d_output;
+  for (std::size_t i = layers_.size(); i-- > 0;) {
+    const FastLayer& layer = layers_[i];
+    ActivationBackward(layer.activation, dy, outputs_[i].data(), layer.out_size * B);
+    const float* x = i == 0 ? input : outputs_[i - 1].data();
+    float* dx =
+        i == 0 ? d_input : (dy == gradient_a_.data() ? gradient_b_.data() : gradient_a_.data());
+    if (layer.kind == FastLayer::Kind::kLinear) {
+      kernels::LinearBackward(Data(layer.weight), x, dy, layer.in_size, layer.out_size, B,
+                              Data(layer.weight_grad), Data(layer.bias_grad), dx,
+                              transposed_.data());
+    } else {
+      kernels::CircularConvBackward(layer.conv, Data(layer.weight), x, dy, B,
+                                    Data(layer.weight_grad), Data(layer.bias_grad), dx);
+    }
+    dy = dx;
+  }
+}
+
+FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
+    : model_(std::move(model)),
+      max_batch_(max_batch),
+      features_dim_(static_cast<int>(model_->features_extractor()->features_dim())),
+      extractor_trainable_(model_->features_extractor()->trainable()),
+      parameters_(model_->TrainableParameters()),
+      gradients_(ZerosLike(parameters_)),
+      log_std_(model_->log_std()),
+      log_std_grad_(GradientOf(log_std_)),
+      perception_([this] {
+        std::vector<FastLayer> layers;
+        int length = kNumRays;
+        for (const PerceptionLayer& layer : model_->features_extractor()->layers()) {
+          const auto activation =
+              layer.relu ? FastLayer::Activation::kRelu : FastLayer::Activation::kNone;
+          if (layer.linear) {
+            layers.push_back(Bind(FastLayer::Kind::kLinear, layer.linear->weight,
+                                  layer.linear->bias, activation));
+            continue;
+          }
+          FastLayer conv =
+              Bind(FastLayer::Kind::kConv, layer.conv->weight, layer.conv->bias, activation);
+          conv.conv = ConvShape(layer.conv->options, length);
+          conv.in_size = conv.conv.in_channels * length;
+          length = conv.conv.out_length();
+          conv.out_size = conv.conv.out_channels * length;
+          layers.push_back(conv);
+        }
+        return FastLayerStack(std::move(layers), max_batch_);
+      }()),
+      actor_([this] {
+        std::vector<FastLayer> layers;
+        for (const auto& module : model_->mlp_extractor()->policy_net->children()) {
+          if (auto linear = std::dynamic_pointer_cast<torch::nn::LinearImpl>(module)) {
+            layers.push_back(Bind(FastLayer::Kind::kLinear, linear->weight, linear->bias,
+                                  FastLayer::Activation::kTanh));
+          }
+        }
+        layers.push_back(Bind(FastLayer::Kind::kLinear, model_->action_net()->weight,
+                              model_->action_net()->bias, FastLayer::Activation::kNone));
+        return FastLayerStack(std::move(layers), max_batch_);
+      }()),
+      critic_([this] {
+        std::vector<FastLayer> layers;
+        for (const auto& module : model_->mlp_extractor()->value_net->children()) {
+          if (auto linear = std::dynamic_pointer_cast<torch::nn::LinearImpl>(module)) {
+            layers.push_back(Bind(FastLayer::Kind::kLinear, linear->weight, linear->bias,
+                                  FastLayer::Activation::kTanh));
+          }
+        }
+        layers.push_back(Bind(FastLayer::Kind::kLinear, model_->value_net()->weight,
+                              model_->value_net()->bias, FastLayer::Activation::kNone));
+        return FastLayerStack(std::move(layers), max_batch_);
+      }()),
+      rows_(max_batch),
+      perception_input_(static_cast<std::size_t>(kNumRays) * max_batch),
+      features_(static_cast<std::size_t>(features_dim_) * max_batch),
+      d_features_actor_(features_.size()),
+      d_features_critic_(features_.size()) {
+  TORCH_CHECK(perception_.in_size() == kNumRays, "the perception stack must read 180 values");
+  TORCH_CHECK(kNavigationSize + perception_.out_size() == features_dim_,
+              "perception output does not match features_dim");
+}
+
+torch::Tensor FastActorCritic::GradientOf(const torch::Tensor& parameter) const {
+  for (std::size_t i = 0; i < parameters_.size(); ++i) {
+    if (parameters_[i].is_same(parameter)) return gradients_[i];
+  }
+  return {};  // frozen
+}
+
+FastLayer FastActorCritic::Bind(FastLayer::Kind kind, const torch::Tensor& weight,
+                                const torch::Tensor& bias, FastLayer::Activation activation) const {
+  TORCH_CHECK(
+      weight.is_contiguous() && weight.scalar_type() == torch::kFloat32 && weight.device().is_cpu(),
+      "FastActorCritic needs contiguous float32 CPU parameters");
+  FastLayer layer;
+  layer.kind = kind;
+  layer.activation = activation;
+  layer.weight = weight;
+  layer.bias = bias;
+  layer.weight_grad = GradientOf(weight);
+  layer.bias_grad = GradientOf(bias);
+  if (kind == FastLayer::Kind::kLinear) {
+    layer.in_size = static_cast<int>(weight.size(1));
+    layer.out_size = static_cast<int>(weight.size(0));
+  }
+  return layer;
+}
+
+void FastActorCritic::Predict(const float* observations, int B, float* mean, float* value) {
+  TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
+  for (int b = 0; b < B; ++b) {
+    rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * kObservationSize;
+  }
+  ForwardObservations(rows_.data(), B);
+  for (int b = 0; b < B; ++b) {
+    for (int j = 0; j < kActionSize; ++j) mean[b * kActionSize + j] = mean_[j * B + b];
+    value[b] = value_[b];
+  }
+}
+
+void FastActorCritic::Features(const float* observations, int count, float* features) {
+  for (int start = 0; start < count; start += max_batch_) {
+    const int B = std::min(max_batch_, count - start);
+    for (int b = 0; b < B; ++b) {
+      rows_[b] = observations + static_cast<std::ptrdiff_t>(start + b) * kObservationSize;
+    }
+    GatherRows(rows_.data(), B, kNavigationSize, kNumRays, perception_input_.data());
+    const float* perception = perception_.Forward(perception_input_.data(), B);
+    for (int b = 0; b < B; ++b) {
+      float* out = features + static_cast<std::ptrdiff_t>(start + b) * features_dim_;
+      std::copy(rows_[b], rows_[b] + kNavigationSize, out);
+      for (int i = kNavigationSize; i < features_dim_; ++i) {
+        out[i] = perception[(i - kNavigationSize) * B + b];
+      }
+    }
+  }
+}
+
+void FastActorCritic::ForwardObservations(const float* const* rows, int B) {
+  GatherRows(rows, B, 0, kNavigationSize, features_.data());
+  GatherRows(rows, B, kNavigationSize, kNumRays, perception_input_.data());
+  const float* perception = perception_.Forward(perception_input_.data(), B);
+  std::copy(perception, perception + perception_.out_size() * B,
+            features_.data() + kNavigationSize * B);
+  ForwardFromFeatures(B);
+}
+
+void FastActorCritic::ForwardFeatures(const float* const* rows, int B) {
+  GatherRows(rows, B, 0, features_dim_, features_.data());
+  ForwardFromFeatures(B);
+}
+
+void FastActorCritic::ForwardFromFeatures(int B) {
+  TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
+  mean_ = actor_.Forward(features_.data(), B);
+  value_ = critic_.Forward(features_.data(), B);
+}
+
+void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log_std, int B) {
+  float* d_actor_features = extractor_trainable_ ? d_features_actor_.data() : nullptr;
+  float* d_critic_features = extractor_trainable_ ? d_features_critic_.data() : nullptr;
+  actor_.Backward(features_.data(), d_mean, B, d_actor_features);
+  critic_.Backward(features_.data(), d_value, B, d_critic_features);
+  std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
+  if (!extractor_trainable_) return;
+  // Both heads read the same features: their gradients add up (rows 6.. are the perception's).
+  float* d_perception = d_features_actor_.data() + kNavigationSize * B;
+  const float* d_critic_perception = d_features_critic_.data() + kNavigationSize * B;
+  const int n = perception_.out_size() * B;
+  for (int i = 0; i < n; ++i) d_perception[i] += d_critic_perception[i];
+  perception_.Backward(perception_input_.data(), d_perception, B, nullptr);
+}
+
+}  // namespace colav

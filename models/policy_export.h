@@ -1,0 +1,32 @@
+// TorchScript export of the trained policy, written without Python (spec interfaces.md): the
+// ActorCritic's parameters are copied into a torch::jit::Module whose methods are compiled from
+// TorchScript source generated here, so policy.pt loads with torch.jit.load in Python and
+// torch::jit::load in C++.
+//
+//   forward(obs: float32 [B, 186]) -> action [B, 2]: the Gaussian's mean clipped to [-1, 1]
+//                                     (the deterministic action);
+//   value(obs) -> [B, 1];  features(obs) -> [B, 18] (the extractor's output).
+//   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead
+//   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees).
+//   Attributes: extractor (str), locked (bool), global_step (int), observation_layout (str).
+// A parameter `a.b.c` of the ActorCritic is the attribute `a_b_c` of the scripted module.
+#pragma once
+
+#include <torch/script.h>
+#include <torch/torch.h>
+
+#include <cstdint>
+#include <filesystem>
+
+#include "models/actor_critic.h"
+
+namespace colav {
+
+/// The scripted policy in memory (parameters are detached copies).
+torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step);
+
+/// Writes ScriptPolicy(model) to `path` atomically; an unwritable path is a UserError naming it.
+void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
+                  const std::filesystem::path& path);
+
+}  // namespace colav

@@ -1,0 +1,205 @@
+#include "models/torchscript_export.h"
+
+#include <sstream>
+#include <vector>
+
+#include "models/cptc.h"
+#include "models/vae_architecture.h"
+#include "src/atomic_file.h"
+#include "src/error.h"
+
+namespace colav {
+namespace {
+
+constexpr char kArchitectureAttribute[] = "architecture";
+constexpr char kLatentDimsAttribute[] = "latent_dims";
+constexpr char kDecoderPaddingAttribute[] = "decoder_padding";
+
+std::string DecoderPaddingName(DecoderPadding padding) {
+  return padding == DecoderPadding::kCircular ? "circular" : "zero";
+}
+
+// Statements that wrap the length axis of `h` by `width` columns from the opposite end.
+std::string WrapSource(std::int64_t width) {
+  if (width == 0) return "";
+  const std::string w = std::to_string(width);
+  return "    h = torch.cat([h[:, :, -" + w + ":], h, h[:, :, :" + w + "]], 2)\n";
+}
+
+// Statements taking x [B, 180] to the flattened conv features h [B, 12], each circular Conv1d as
+// a wrap followed by an unpadded conv1d; `prefix` is the scripted name of the encoder module's
+// parameters ("" or "encoder_").
+std::string EncoderFeaturesSource(VaeArchitecture architecture, const std::string& prefix) {
+  const std::vector<ConvLayerSpec> layers = EncoderConvLayers(architecture);
+  std::ostringstream source;
+  source << "    h = x.unsqueeze(1)\n";
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const std::string parameter = "self." + prefix + "convs_" + std::to_string(i) + "_";
+    source << WrapSource(layers[i].padding) << "    h = torch.conv1d(h, " << parameter << "weight, "
+           << parameter << "bias, [" << layers[i].stride << "])\n";
+    if (i + 1 < layers.size()) source << "    h = torch.relu(h)\n";
+  }
+  source << "    h = h.flatten(1)\n";
+  return source.str();
+}
+
+// The scripted Linear layer `layer` (its parameters `<layer>_weight`, `<layer>_bias`) on `input`.
+std::string LinearSource(const std::string& input, const std::string& layer) {
+  return "torch.addmm(self." + layer + "_bias, " + input + ", self." + layer + "_weight.t())";
+}
+
+std::string DecoderSource(const VaeDecoderOptions& options) {
+  const std::vector<ConvLayerSpec> layers = DecoderConvLayers(options.architecture);
+  std::ostringstream source;
+  source << "def decode(self, z: Tensor) -> Tensor:\n"
+         << "    h = torch.relu(" << LinearSource("z", "decoder_fc") << ").unsqueeze(1)\n";
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    const ConvLayerSpec& layer = layers[i];
+    std::int64_t padding = layer.padding;
+    // CPTC as the paper's recipe (models/cptc.h): wrap, transposed convolution, crop; the crop is
+    // folded into the transposed convolution's own padding.
+    if (options.padding == DecoderPadding::kCircular) {
+      const std::int64_t wrap_width = CptcWrapWidth(layer.kernel_size, layer.stride, layer.padding);
+      source << WrapSource(wrap_width);
+      padding += wrap_width * layer.stride;
+    }
+    const std::string parameter = "self.decoder_deconvs_" + std::to_string(i) + "_";
+    source << "    h = torch.conv_transpose1d(h, " << parameter << "weight, " << parameter
+           << "bias, [" << layer.stride << "], [" << padding << "])\n";
+    if (i + 1 < layers.size()) source << "    h = torch.relu(h)\n";
+  }
+  source << "    return torch.sigmoid(h.flatten(1))\n";
+  return source.str();
+}
+
+// Copies every parameter of `module` into `script` as a float32 CPU tensor.
+void RegisterParameters(const torch::nn::Module& module, torch::jit::Module& script) {
+  for (const auto& parameter : module.named_parameters()) {
+    script.register_parameter(ScriptedParameterName(parameter.key()),
+                              parameter.value().detach().to(torch::kCPU, torch::kFloat32,
+                                                            /*non_blocking=*/false, /*copy=*/true),
+                              /*is_buffer=*/false);
+  }
+}
+
+void Save(const torch::jit::Module& script, const std::filesystem::path& path) {
+  WriteFileAtomically(path, [&](const std::filesystem::path& temporary_path) {
+    try {
+      script.save(temporary_path.string());
+    } catch (const c10::Error&) {
+      throw UserError("cannot write TorchScript file '" + path.string() + "'");
+    }
+  });
+}
+
+torch::jit::IValue RequireAttribute(const torch::jit::Module& script, const std::string& name,
+                                    const std::filesystem::path& path) {
+  if (!script.hasattr(name)) {
+    throw UserError("encoder file '" + path.string() + "' has no attribute '" + name + "'");
+  }
+  return script.attr(name);
+}
+
+// The tensor `name` of an encoder file, which must have the shape the encoder built from the
+// file's attributes expects; `file` names the file in errors.
+torch::Tensor StoredParameter(const torch::jit::Module& script, const std::string& name,
+                              at::IntArrayRef expected_shape, const VaeEncoderOptions& options,
+                              const std::string& file) {
+  if (!script.hasattr(name) || !script.attr(name).isTensor()) {
+    throw UserError(file + " has no parameter '" + name + "'");
+  }
+  torch::Tensor stored = script.attr(name).toTensor();
+  if (stored.sizes() != expected_shape) {
+    std::ostringstream message;
+    message << file << ": parameter '" << name << "' has shape " << stored.sizes() << ", expected "
+            << expected_shape << " for a " << VaeArchitectureName(options.architecture)
+            << " encoder with latent_dims " << options.latent_dims;
+    throw UserError(message.str());
+  }
+  return stored;
+}
+
+}  // namespace
+
+std::string ScriptedParameterName(const std::string& name) {
+  std::string scripted = name;
+  for (char& c : scripted) {
+    if (c == '.') c = '_';
+  }
+  return scripted;
+}
+
+torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder) {
+  const VaeEncoderOptions& options = encoder.options();
+  torch::jit::Module script("__torch__.colav.VaeEncoder");
+  RegisterParameters(encoder, script);
+  script.register_attribute(kArchitectureAttribute, c10::StringType::get(),
+                            VaeArchitectureName(options.architecture));
+  script.register_attribute(kLatentDimsAttribute, c10::IntType::get(), options.latent_dims);
+  script.define("def forward(self, x: Tensor) -> Tensor:\n" +
+                EncoderFeaturesSource(options.architecture, "") + "    return " +
+                LinearSource("h", "fc_mu") + "\n");
+  return script;
+}
+
+torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
+  const VaeOptions& options = vae.options();
+  torch::jit::Module script("__torch__.colav.ConvVae");
+  RegisterParameters(vae, script);
+  script.register_attribute(kArchitectureAttribute, c10::StringType::get(),
+                            VaeArchitectureName(options.architecture));
+  script.register_attribute(kLatentDimsAttribute, c10::IntType::get(), options.latent_dims);
+  script.register_attribute(kDecoderPaddingAttribute, c10::StringType::get(),
+                            DecoderPaddingName(options.decoder_padding));
+  script.define("def encode(self, x: Tensor) -> Tuple[Tensor, Tensor]:\n" +
+                EncoderFeaturesSource(options.architecture, "encoder_") + "    return " +
+                LinearSource("h", "encoder_fc_mu") + ", " + LinearSource("h", "encoder_fc_logvar") +
+                "\n" + DecoderSource(vae.decoder()->options()) +
+                "def forward(self, x: Tensor) -> Tuple[Tensor, Tensor, Tensor]:\n"
+                "    mu, logvar = self.encode(x)\n"
+                "    z = mu + torch.randn_like(mu) * torch.exp(0.5 * logvar)\n"
+                "    return self.decode(z), mu, logvar\n");
+  return script;
+}
+
+void ExportEncoder(const VaeEncoder& encoder, const std::filesystem::path& path) {
+  Save(ScriptEncoder(*encoder), path);
+}
+
+void ExportVae(const ConvVae& vae, const std::filesystem::path& path) {
+  Save(ScriptVae(*vae), path);
+}
+
+VaeEncoder LoadVaeEncoder(const std::filesystem::path& path) {
+  const std::string file = "encoder file '" + path.string() + "'";
+  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
+  torch::jit::Module script;
+  try {
+    script = torch::jit::load(path.string(), torch::kCPU);
+  } catch (const std::exception&) {
+    throw UserError(file + " is not a TorchScript file");
+  }
+
+  const torch::jit::IValue architecture = RequireAttribute(script, kArchitectureAttribute, path);
+  const torch::jit::IValue latent_dims = RequireAttribute(script, kLatentDimsAttribute, path);
+  VaeEncoderOptions options;
+  try {
+    options.architecture = ParseVaeArchitecture(architecture.toStringRef());
+  } catch (const std::exception&) {
+    throw UserError(file + ": attribute 'architecture' is not \"shallow\" or \"deep\"");
+  }
+  if (!latent_dims.isInt() || latent_dims.toInt() <= 0) {
+    throw UserError(file + ": attribute 'latent_dims' is not a positive integer");
+  }
+  options.latent_dims = latent_dims.toInt();
+
+  VaeEncoder encoder(options);
+  torch::NoGradGuard no_grad;
+  for (auto& parameter : encoder->named_parameters()) {
+    parameter.value().copy_(StoredParameter(script, ScriptedParameterName(parameter.key()),
+                                            parameter.value().sizes(), options, file));
+  }
+  return encoder;
+}
+
+}  // namespace colav

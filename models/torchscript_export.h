@@ -1,0 +1,44 @@
+// TorchScript export of the VAE, written without Python: the modules' parameters are copied into a
+// torch::jit::Module whose methods are defined from TorchScript source generated here, so the
+// files load with torch.jit.load in Python and torch::jit::load in C++.
+//
+// Contract (spec interfaces.md):
+//   encoder.pt: forward(x: float32 [B, 180] closeness) -> mu [B, latent]; attributes
+//               `architecture` (str, "shallow" | "deep") and `latent_dims` (int).
+//   vae.pt:     forward(x) -> (reconstruction [B, 180], mu [B, latent], logvar [B, latent]),
+//               sampling z = mu + eps * exp(logvar / 2) with eps = torch.randn_like(mu); also
+//               encode(x) -> (mu, logvar) and decode(z) -> reconstruction; attributes
+//               `architecture`, `latent_dims` and `decoder_padding` (str, "circular" | "zero").
+// A parameter `a.b.c` of the C++ module is the attribute `a_b_c` of the scripted one.
+#pragma once
+
+#include <torch/script.h>
+#include <torch/torch.h>
+
+#include <filesystem>
+#include <string>
+
+#include "models/conv_vae.h"
+#include "models/vae_encoder.h"
+
+namespace colav {
+
+// The scripted modules, in memory: a policy export can embed ScriptEncoder's result as a
+// submodule. Parameters are float32 copies, detached from the C++ module.
+torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder);
+torch::jit::Module ScriptVae(const ConvVaeImpl& vae);
+
+// Write the scripted module to `path` through WriteFileAtomically (parent folders created, no
+// half-written file on failure). A path that cannot be written is a UserError naming it.
+void ExportEncoder(const VaeEncoder& encoder, const std::filesystem::path& path);
+void ExportVae(const ConvVae& vae, const std::filesystem::path& path);
+
+// Rebuild a VaeEncoder from an encoder.pt written by ExportEncoder. A missing file, a file that is
+// not TorchScript, a missing or malformed attribute or parameter, or a parameter whose shape does
+// not fit `architecture` and `latent_dims` is a UserError naming the file.
+VaeEncoder LoadVaeEncoder(const std::filesystem::path& path);
+
+// The scripted name of a C++ parameter name: "fc_mu.weight" -> "fc_mu_weight".
+std::string ScriptedParameterName(const std::string& name);
+
+}  // namespace colav

@@ -1,0 +1,128 @@
+#include "models/actor_critic_fast.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "env/environment_spec.h"
+#include "models/torchscript_export.h"
+#include "tests/models/temporary_directory.h"
+
+namespace colav {
+namespace {
+
+constexpr int kBatch = 13;  // not a multiple of the vector width: exercises the tails
+
+ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& folder, bool locked) {
+  ActorCriticOptions options;
+  options.extractor.kind = kind;
+  options.extractor.locked = locked;
+  options.seed = 11;
+  if (kind != ExtractorKind::kBaseline) {
+    const auto architecture =
+        kind == ExtractorKind::kVaeDeep ? VaeArchitecture::kDeep : VaeArchitecture::kShallow;
+    torch::manual_seed(2);
+    options.extractor.encoder = folder / "encoder.pt";
+    ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, 12}), options.extractor.encoder);
+  }
+  return options;
+}
+
+torch::Tensor Observations(int B) {
+  torch::Tensor obs = torch::rand({B, kObservationSize});
+  obs.narrow(1, 0, kNavigationSize).mul_(4.0).sub_(2.0);
+  return obs;
+}
+
+void ExpectClose(const float* fast, const torch::Tensor& reference, double tolerance,
+                 const std::string& what) {
+  const torch::Tensor expected = reference.detach().contiguous().flatten();
+  const double scale = std::max(1e-3, expected.abs().max().item<double>());
+  for (int i = 0; i < expected.numel(); ++i) {
+    ASSERT_NEAR(fast[i], expected[i].item<float>(), tolerance * scale) << what << " [" << i << "]";
+  }
+}
+
+class FastActorCriticTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool>> {};
+
+TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
+  const auto [kind, locked] = GetParam();
+  testing::TemporaryDirectory directory;
+  ActorCritic model(Options(kind, directory.path(), locked));
+  FastActorCritic fast(model, kBatch);
+  EXPECT_EQ(fast.extractor_trainable(), kind == ExtractorKind::kBaseline || !locked);
+
+  const torch::Tensor obs = Observations(kBatch);
+  const torch::Tensor grad_mean = torch::randn({kBatch, kActionSize});
+  const torch::Tensor grad_value = torch::randn({kBatch});
+  const torch::Tensor grad_log_std = torch::randn({kActionSize});
+  auto [mean, value] = model->forward(obs);
+  const torch::Tensor loss = (mean * grad_mean).sum() + (value.squeeze(1) * grad_value).sum() +
+                             (model->log_std() * grad_log_std).sum();
+  loss.backward();
+
+  std::vector<const float*> rows(kBatch);
+  for (int b = 0; b < kBatch; ++b) rows[b] = obs[b].data_ptr<float>();
+  std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
+  if (fast.extractor_trainable()) {
+    fast.ForwardObservations(rows.data(), kBatch);
+  } else {
+    fast.Features(obs.data_ptr<float>(), kBatch, features.data());
+    ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
+    for (int b = 0; b < kBatch; ++b) rows[b] = &features[b * fast.features_dim()];
+    fast.ForwardFeatures(rows.data(), kBatch);
+  }
+  ExpectClose(fast.mean(), mean.t(), 1e-5, "mean");
+  ExpectClose(fast.value(), value, 1e-5, "value");
+
+  torch::Tensor d_mean = grad_mean.t().contiguous();
+  torch::Tensor d_value = grad_value.clone();
+  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
+                kBatch);
+  const auto parameters = model->TrainableParameters();
+  ASSERT_EQ(fast.gradients().size(), parameters.size());
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    ExpectClose(fast.gradients()[i].data_ptr<float>(), parameters[i].grad(), 1e-4,
+                "gradient " + std::to_string(i));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticTest,
+                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
+                                           std::tuple{ExtractorKind::kVaeShallow, true},
+                                           std::tuple{ExtractorKind::kVaeShallow, false},
+                                           std::tuple{ExtractorKind::kVaeDeep, true},
+                                           std::tuple{ExtractorKind::kVaeDeep, false}));
+
+TEST(FastActorCriticPredictTest, PredictMatchesTheModel) {
+  ActorCritic model(ActorCriticOptions{});
+  FastActorCritic fast(model, 8);
+  const torch::Tensor obs = Observations(8);
+  std::vector<float> mean(8 * kActionSize), value(8);
+  fast.Predict(obs.data_ptr<float>(), 8, mean.data(), value.data());
+  torch::NoGradGuard no_grad;
+  const auto [expected_mean, expected_value] = model->forward(obs);
+  ExpectClose(mean.data(), expected_mean, 1e-5, "mean");
+  ExpectClose(value.data(), expected_value, 1e-5, "value");
+}
+
+TEST(ActorCriticKernelsTest, TanhIsAccurate) {
+  std::vector<float> x;
+  for (float v = -12.0f; v <= 12.0f; v += 0.001f) x.push_back(v);
+  std::vector<float> y = x;
+  kernels::TanhInPlace(y.data(), static_cast<int>(y.size()));
+  for (std::size_t i = 0; i < x.size(); ++i) ASSERT_NEAR(y[i], std::tanh(x[i]), 3e-7) << x[i];
+}
+
+TEST(ActorCriticKernelsTest, MatMulWithStridesAndTails) {
+  const torch::Tensor a = torch::randn({7, 5});
+  const torch::Tensor b = torch::randn({7, 19});
+  std::vector<float> c(5 * 19, 1.0f);
+  // C = A^T B: A(m, k) = a[k, m]
+  kernels::MatMul(c.data(), 19, a.data_ptr<float>(), 1, 5, b.data_ptr<float>(), 19, 5, 19, 7,
+                  /*accumulate=*/true);
+  ExpectClose(c.data(), a.t().mm(b) + 1.0, 1e-5, "C");
+}
+
+}  // namespace
+}  // namespace colav

@@ -1,0 +1,108 @@
+#include "models/actor_critic.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "env/environment_spec.h"
+#include "models/torchscript_export.h"
+#include "tests/models/temporary_directory.h"
+
+namespace colav {
+namespace {
+
+// W W^T (rows <= columns) or W^T W (rows > columns): gain^2 times the identity.
+void ExpectOrthogonal(const torch::Tensor& weight, double gain) {
+  const torch::Tensor w = weight.detach().to(torch::kFloat64);
+  const torch::Tensor gram = w.size(0) <= w.size(1) ? w.mm(w.t()) : w.t().mm(w);
+  const torch::Tensor expected = gain * gain * torch::eye(gram.size(0), torch::kFloat64);
+  EXPECT_LT((gram - expected).abs().max().item<double>(), 1e-5 * std::max(1.0, gain * gain))
+      << "shape " << weight.sizes();
+}
+
+std::vector<torch::nn::Linear> Linears(torch::nn::Sequential& trunk) {
+  std::vector<torch::nn::Linear> linears;
+  for (const auto& child : trunk->children()) {
+    if (auto linear = std::dynamic_pointer_cast<torch::nn::LinearImpl>(child)) {
+      linears.emplace_back(linear);
+    }
+  }
+  return linears;
+}
+
+TEST(ActorCriticTest, OrthogonalInitialisationGainsAndZeroBiases) {
+  ActorCritic model(ActorCriticOptions{});
+  for (auto* trunk : {&model->mlp_extractor()->policy_net, &model->mlp_extractor()->value_net}) {
+    const auto linears = Linears(*trunk);
+    ASSERT_EQ(linears.size(), 3U);
+    for (const auto& linear : linears) {
+      ExpectOrthogonal(linear->weight, std::sqrt(2.0));
+      EXPECT_EQ(linear->bias.abs().max().item<float>(), 0.0f);
+    }
+  }
+  ExpectOrthogonal(model->action_net()->weight, 0.01);
+  ExpectOrthogonal(model->value_net()->weight, 1.0);
+  EXPECT_EQ(model->action_net()->bias.abs().max().item<float>(), 0.0f);
+  EXPECT_EQ(model->value_net()->bias.abs().max().item<float>(), 0.0f);
+  EXPECT_TRUE(torch::equal(model->log_std(), torch::zeros({kActionSize})));
+}
+
+TEST(ActorCriticTest, ArchitectureAndStateDictNamesFollowStableBaselines3) {
+  ActorCritic model(ActorCriticOptions{});
+  const auto parameters = model->named_parameters();
+  for (const char* name :
+       {"features_extractor.perception.0.weight", "mlp_extractor.policy_net.0.weight",
+        "mlp_extractor.policy_net.4.bias", "mlp_extractor.value_net.2.weight", "action_net.weight",
+        "value_net.bias", "log_std"}) {
+    EXPECT_NE(parameters.find(name), nullptr) << name;
+  }
+  EXPECT_EQ(parameters["mlp_extractor.policy_net.0.weight"].sizes(), (at::IntArrayRef{128, 18}));
+  EXPECT_EQ(parameters["mlp_extractor.value_net.4.weight"].sizes(), (at::IntArrayRef{32, 64}));
+  const auto [mean, value] = model->forward(torch::rand({5, kObservationSize}));
+  EXPECT_EQ(mean.sizes(), (at::IntArrayRef{5, kActionSize}));
+  EXPECT_EQ(value.sizes(), (at::IntArrayRef{5, 1}));
+}
+
+TEST(ActorCriticTest, InitialisationIsAFunctionOfTheSeed) {
+  ActorCriticOptions options;
+  options.seed = 7;
+  ActorCritic a(options), b(options);
+  options.seed = 8;
+  ActorCritic c(options);
+  const auto pa = a->parameters(), pb = b->parameters(), pc = c->parameters();
+  for (std::size_t i = 0; i < pa.size(); ++i) EXPECT_TRUE(torch::equal(pa[i], pb[i]));
+  EXPECT_FALSE(torch::equal(a->action_net()->weight, c->action_net()->weight));
+  // The baseline conv keeps PyTorch's default init range U(+-1/sqrt(45)), from the same seed.
+  const torch::Tensor conv = a->features_extractor()->layers()[0].conv->weight;
+  EXPECT_LE(conv.abs().max().item<double>(), 1.0 / std::sqrt(45.0));
+  EXPECT_FALSE(torch::equal(conv, c->features_extractor()->layers()[0].conv->weight));
+}
+
+TEST(ActorCriticTest, PretrainedEncoderKeepsItsWeights) {
+  testing::TemporaryDirectory directory;
+  torch::manual_seed(3);
+  VaeEncoder encoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12});
+  ExportEncoder(encoder, directory.path() / "encoder.pt");
+  for (const bool locked : {true, false}) {
+    ActorCriticOptions options;
+    options.extractor.kind = ExtractorKind::kVaeDeep;
+    options.extractor.encoder = directory.path() / "encoder.pt";
+    options.extractor.locked = locked;
+    ActorCritic model(options);
+    const auto source = encoder->named_parameters();
+    const auto target = model->features_extractor()->named_parameters();
+    EXPECT_TRUE(torch::equal(target["perception.0.weight"], source["convs.0.weight"]));
+    EXPECT_TRUE(torch::equal(target["perception.2.bias"], source["convs.2.bias"]));
+    EXPECT_TRUE(torch::equal(target["perception.3.weight"], source["fc_mu.weight"]));
+    EXPECT_TRUE(torch::equal(target["perception.3.bias"], source["fc_mu.bias"]));
+    const torch::Tensor scans = torch::rand({4, kNumRays});
+    EXPECT_TRUE(torch::allclose(model->features_extractor()->Perception(scans), encoder->Mu(scans),
+                                1e-5, 1e-6));
+    const std::size_t trainable = model->TrainableParameters().size();
+    const std::size_t all = model->parameters().size();
+    EXPECT_EQ(trainable, locked ? all - 8 : all);  // 3 convs + fc_mu, weight and bias each
+  }
+}
+
+}  // namespace
+}  // namespace colav

@@ -1,0 +1,55 @@
+#include "models/policy_export.h"
+
+#include <gtest/gtest.h>
+
+#include "env/environment_spec.h"
+#include "models/torchscript_export.h"
+#include "tests/models/temporary_directory.h"
+
+namespace colav {
+namespace {
+
+void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) {
+  ExportPolicy(*model, 1234, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::NoGradGuard no_grad;
+  torch::Tensor obs = torch::rand({6, kObservationSize});
+  obs.narrow(1, 0, kNavigationSize).mul_(200.0).sub_(100.0);  // big means: clipping matters
+  const auto [mean, value] = model->forward(obs);
+  const torch::Tensor action = loaded.forward({obs}).toTensor();
+  EXPECT_TRUE(torch::allclose(action, mean.clamp(-1.0, 1.0), 1e-5, 1e-6));
+  EXPECT_LE(action.abs().max().item<float>(), 1.0f);
+  EXPECT_TRUE(torch::allclose(loaded.get_method("value")({obs}).toTensor(), value, 1e-5, 1e-5));
+  EXPECT_TRUE(torch::allclose(loaded.get_method("features")({obs}).toTensor(),
+                              model->features_extractor()->forward(obs), 1e-5, 1e-6));
+  EXPECT_EQ(loaded.attr("global_step").toInt(), 1234);
+  EXPECT_EQ(loaded.attr("extractor").toStringRef(),
+            ExtractorKindName(model->options().extractor.kind));
+}
+
+TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
+  testing::TemporaryDirectory directory;
+  ActorCriticOptions options;
+  options.log_std_init = -0.5;
+  ActorCritic model(options);
+  // Large action-head weights, so that some means fall outside [-1, 1].
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.normal_(0.0, 3.0);
+  ExpectExportMatches(model, directory.path() / "policy.pt");
+}
+
+TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
+  testing::TemporaryDirectory directory;
+  ActorCriticOptions options;
+  options.extractor.kind = ExtractorKind::kVaeDeep;
+  options.extractor.encoder = directory.path() / "encoder.pt";
+  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12}),
+                options.extractor.encoder);
+  ActorCritic model(options);
+  ExpectExportMatches(model, directory.path() / "policy.pt");
+  torch::jit::Module loaded = torch::jit::load((directory.path() / "policy.pt").string());
+  EXPECT_TRUE(loaded.attr("locked").toBool());
+}
+
+}  // namespace
+}  // namespace colav
