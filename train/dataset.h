@@ -1,0 +1,34 @@
+// The VAE dataset as tensors: the file's ranges turned into closeness (1 - d/150 by default, the
+// paper's transform; the reference environment's log transform as an option), one tensor per
+// split, and the paper's training noise, drawn per training seed.
+#pragma once
+
+#include <torch/torch.h>
+
+#include <cstdint>
+#include <filesystem>
+
+#include "env/environment_spec.h"
+
+namespace colav {
+
+struct VaeData {
+  torch::Tensor train;       ///< float32 [n_train, 180] closeness, without noise
+  torch::Tensor validation;  ///< float32 [n_validation, 180]
+  torch::Tensor test;        ///< float32 [n_test, 180]
+  torch::Tensor test_group;  ///< int64 [n_test], ScanGroup of each test row
+};
+
+/// Reads a generate_dataset file (errors as ReadScanDataset) and transforms its ranges. A split
+/// without rows is a UserError naming the file.
+VaeData LoadVaeData(const std::filesystem::path& path, ClosenessTransform transform);
+
+/// "linear" or "log"; anything else is a UserError naming `key` and the value.
+ClosenessTransform ParseClosenessTransform(const std::string& name, const std::string& key);
+
+/// x + N(0, variance) noise, drawn from a generator seeded with `seed` (the paper's sigma^2 =
+/// 0.007 on the training split: sd 0.084, about 12.5 m). Values are not clipped, as in the
+/// reference; BCE accepts targets slightly outside [0, 1].
+torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed);
+
+}  // namespace colav

@@ -1,0 +1,61 @@
+// PPO's clipped-surrogate loss with Stable-Baselines3 semantics (reference-learning 6.4):
+//   A' = (A - mean A) / (std A + 1e-8)            per minibatch (unbiased std), if normalising
+//   r  = exp(log pi(a|s) - log pi_old(a|s))
+//   L  = -mean(min(r A', clip(r, 1 - c, 1 + c) A')) + ent_coef * (-mean entropy)
+//        + vf_coef * mean((returns - V)^2)
+// Two implementations: PpoLoss with autograd (the reference, used by the tests), and
+// PpoLossGradients, which gives the same loss with its gradients in closed form for the
+// hand-written backward pass (FastActorCritic).
+#pragma once
+
+#include <torch/torch.h>
+
+#include "models/diagonal_gaussian.h"
+
+namespace colav {
+
+struct PpoLossOptions {
+  double clip_range = 0.2;
+  double ent_coef = 0.01;
+  double vf_coef = 0.5;
+  bool normalize_advantage = true;
+};
+
+/// One minibatch's loss terms, named as SB3 logs them.
+struct PpoLossStats {
+  double loss = 0.0;
+  double policy_gradient_loss = 0.0;
+  double value_loss = 0.0;
+  double entropy_loss = 0.0;   ///< -mean entropy
+  double approx_kl = 0.0;      ///< mean((r - 1) - log r)
+  double clip_fraction = 0.0;  ///< fraction of samples with |r - 1| > clip_range
+};
+
+struct PpoLossResult {
+  torch::Tensor loss;  ///< scalar, differentiable
+  PpoLossStats stats;
+};
+
+/// Autograd version: distribution of the current policy, values [B] (or [B, 1]), and the
+/// minibatch's actions [B, 2], old log-probabilities, advantages and returns [B].
+PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::Tensor& values,
+                      const torch::Tensor& actions, const torch::Tensor& old_log_probs,
+                      const torch::Tensor& advantages, const torch::Tensor& returns,
+                      const PpoLossOptions& options);
+
+/// A minibatch of B samples in flat arrays.
+struct PpoMinibatch {
+  int size = 0;
+  const float* actions = nullptr;        ///< [B, 2], unclipped samples
+  const float* old_log_probs = nullptr;  ///< [B]
+  const float* advantages = nullptr;     ///< [B], not normalised
+  const float* returns = nullptr;        ///< [B]
+};
+
+/// Closed-form version: from the policy's mean [2, B] (feature-major), log_std [2] and value [B],
+/// writes d loss / d mean [2, B], d loss / d log_std [2] and d loss / d value [B].
+PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const float* value,
+                              const PpoMinibatch& batch, const PpoLossOptions& options,
+                              float* d_mean, float* d_log_std, float* d_value);
+
+}  // namespace colav

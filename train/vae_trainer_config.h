@@ -1,0 +1,37 @@
+// train_vae's configuration keys (configs/vae.yaml documents the defaults) and the options they
+// resolve to.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include "env/environment_spec.h"
+#include "models/conv_vae.h"
+#include "src/config.h"
+
+namespace colav {
+
+struct VaeTrainingOptions {
+  std::string data_path;
+  ClosenessTransform transform = ClosenessTransform::kLinear;
+  double train_noise_variance = 0.007;
+  VaeOptions model;
+  double beta = 1.0;
+  std::int64_t epochs = 25;
+  std::int64_t batch_size = 64;
+  double learning_rate = 1e-3;
+  std::int64_t seeds = 1;
+  std::uint64_t seed = 0;  ///< master seed; seed k of the run derives from it
+  int threads = 1;         ///< LibTorch intra-op threads
+  std::int64_t evaluation_batch_size = 2048;
+  bool figures = true;
+};
+
+ConfigSchema VaeTrainingSchema();
+/// The options of a resolved configuration; a missing data path is a UserError.
+VaeTrainingOptions VaeTrainingOptionsFrom(const Config& config);
+
+/// "shallow, latent 12, beta 1, circular decoder", for logs and tables.
+std::string DescribeVae(const VaeTrainingOptions& options);
+
+}  // namespace colav
