@@ -1,0 +1,103 @@
+#include "eval/episode_runner.h"
+
+#include <atomic>
+#include <memory>
+
+#include "env/environment.h"
+#include "env/scenario_file.h"
+#include "env/thread_pool.h"
+
+namespace colav {
+namespace {
+
+// One policy's run through one episode.
+struct Lane {
+  std::unique_ptr<Environment> env;
+  float* observation = nullptr;  // row of the policy's observation batch
+  bool done = false;
+  EpisodeOutcome outcome;
+};
+
+void StepLane(Lane& lane, const float* action) {
+  const double action_values[kActionSize] = {action[0], action[1]};
+  const StepResult result = lane.env->Step(action_values, lane.observation);
+  lane.outcome.positions.push_back(lane.env->world().vessel().head<2>());
+  lane.outcome.cumulative_rewards.push_back(lane.outcome.cumulative_rewards.back() + result.reward);
+  if (result.episode) {
+    lane.outcome.metrics = *result.episode;
+    lane.done = true;
+  }
+}
+
+// The actions for the given rows of a policy's observation batch. At least two rows go through
+// the policy: for a single row LibTorch takes a matrix-vector path whose rounding differs, and an
+// episode's result would depend on whether it happened to run last.
+torch::Tensor ActOnRows(Policy& policy, const torch::Tensor& observations,
+                        std::vector<std::int64_t> rows) {
+  const std::int64_t count = static_cast<std::int64_t>(rows.size());
+  if (count == 1) rows.push_back(rows.front());
+  return policy.Act(observations.index_select(0, torch::tensor(rows)))
+      .slice(0, 0, count)
+      .contiguous();
+}
+
+}  // namespace
+
+std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
+    std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
+    const EnvironmentConfig& config, int num_threads,
+    const std::function<void(int finished, int total)>& on_episode_done) {
+  const int num_models = static_cast<int>(policies.size());
+  const int num_episodes = static_cast<int>(episodes.size());
+  const int total = num_models * num_episodes;
+  std::vector<torch::Tensor> observations;
+  std::vector<Lane> lanes(total);
+  for (int m = 0; m < num_models; ++m) {
+    observations.push_back(torch::zeros({num_episodes, kObservationSize}));
+    for (int e = 0; e < num_episodes; ++e) {
+      Lane& lane = lanes[m * num_episodes + e];
+      const EvaluationEpisode& episode = episodes[e];
+      lane.env = std::make_unique<Environment>(
+          config, std::make_shared<FixedScenarioSource>(episode.scenario));
+      lane.observation = observations[m].data_ptr<float>() + e * kObservationSize;
+      lane.env->Reset(episode.seed.value_or(0), lane.observation);
+      lane.outcome.positions.push_back(lane.env->world().vessel().head<2>());
+      lane.outcome.cumulative_rewards.push_back(0.0);
+    }
+  }
+  ThreadPool pool(num_threads);
+  int finished = 0;
+  while (finished < total) {
+    // Only unfinished episodes are forwarded: most end long before the slowest one.
+    std::vector<torch::Tensor> actions(num_models);
+    std::vector<std::pair<Lane*, const float*>> work;  // lane, its action
+    for (int m = 0; m < num_models; ++m) {
+      std::vector<std::int64_t> active;
+      for (int e = 0; e < num_episodes; ++e) {
+        if (!lanes[m * num_episodes + e].done) active.push_back(e);
+      }
+      if (active.empty()) continue;
+      actions[m] = ActOnRows(policies[m], observations[m], active);
+      for (std::size_t j = 0; j < active.size(); ++j) {
+        work.emplace_back(&lanes[m * num_episodes + active[j]],
+                          actions[m].data_ptr<float>() + j * kActionSize);
+      }
+    }
+    std::atomic<int> newly_finished{0};
+    pool.ParallelFor(static_cast<int>(work.size()), [&](int i) {
+      StepLane(*work[i].first, work[i].second);
+      if (work[i].first->done) ++newly_finished;
+    });
+    finished += newly_finished;
+    if (newly_finished > 0 && on_episode_done) on_episode_done(finished, total);
+  }
+  std::vector<std::vector<EpisodeOutcome>> outcomes(num_models);
+  for (int m = 0; m < num_models; ++m) {
+    for (int e = 0; e < num_episodes; ++e) {
+      outcomes[m].push_back(std::move(lanes[m * num_episodes + e].outcome));
+    }
+  }
+  return outcomes;
+}
+
+}  // namespace colav

@@ -1,0 +1,33 @@
+// Runs policies on evaluation episodes with deterministic actions, all episodes of all models in
+// lock step: one batched forward per model and time step, the worlds stepped in parallel.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+#include "env/environment_spec.h"
+#include "eval/evaluation_episodes.h"
+#include "eval/policy.h"
+
+namespace colav {
+
+/// What one policy did in one episode.
+struct EpisodeOutcome {
+  EpisodeMetrics metrics;
+  std::vector<Eigen::Vector2d> positions;  ///< vessel position, row 0 = after reset
+  std::vector<double> cumulative_rewards;  ///< cumulative reward at each position (0 at reset)
+};
+
+/// outcomes[m][e]: policy m on episode e. Each time step, a policy's forward sees the observations
+/// of its unfinished episodes (at least two rows), so an episode's result does not depend on the
+/// other episodes when the policy's rows are computed independently of the batch size, as
+/// LibTorch's CPU kernels do for two rows and more.
+/// `on_episode_done(finished, total)` is called from the calling thread after each time step in
+/// which episodes finished.
+std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
+    std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
+    const EnvironmentConfig& config, int num_threads,
+    const std::function<void(int finished, int total)>& on_episode_done = {});
+
+}  // namespace colav

@@ -1,0 +1,241 @@
+// evaluate: runs trained policies with deterministic actions on the shared test scenarios (or on
+// scenario files) and writes episodes.csv, summary.json, summary.md and trajectory figures.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <thread>
+#include <variant>
+
+#include "env/environment_config.h"
+#include "eval/episode_runner.h"
+#include "eval/episode_table.h"
+#include "eval/evaluation_episodes.h"
+#include "eval/evaluation_report.h"
+#include "eval/policy.h"
+#include "eval/safe_name.h"
+#include "eval/trajectory_figure.h"
+#include "src/atomic_file.h"
+#include "src/cli.h"
+#include "src/error.h"
+#include "src/logging.h"
+#include "src/progress.h"
+#include "src/run_folder.h"
+
+namespace colav {
+namespace {
+
+// Re-declares `entry` in `schema` (with its type, range and choices).
+void Declare(ConfigSchema& schema, const ConfigSchema::Entry& entry) {
+  std::visit(
+      [&](const auto& value) {
+        using T = std::decay_t<decltype(value)>;
+        if constexpr (std::is_same_v<T, double>) {
+          schema.AddDouble(entry.key, value, entry.doc, entry.min_double, entry.max_double);
+        } else if constexpr (std::is_same_v<T, std::int64_t>) {
+          schema.AddInt(entry.key, value, entry.doc, entry.min_int, entry.max_int);
+        } else if constexpr (std::is_same_v<T, bool>) {
+          schema.AddBool(entry.key, value, entry.doc);
+        } else {
+          schema.AddString(entry.key, value, entry.doc, entry.choices);
+        }
+      },
+      entry.default_value);
+}
+
+ConfigSchema EvaluateSchema() {
+  ConfigSchema environment;
+  AddEnvironmentKeys(environment);
+  ConfigSchema schema;
+  // The environment's keys, but in test mode by default: evaluation follows the reference test
+  // procedure, which has no cumulative-reward floor.
+  for (ConfigSchema::Entry entry : environment.entries()) {
+    if (entry.key == "env.test_mode") entry.default_value = true;
+    Declare(schema, entry);
+  }
+  schema.AddInt("eval.episodes", 100, "number of test scenarios", 1, 100000)
+      .AddInt("eval.seed", 0, "master seed of the test scenarios (shared by every model)", 0)
+      .AddInt("eval.threads", 0, "threads stepping the episodes (0 = all cores)", 0, 256)
+      .AddInt("eval.trajectory_scenarios", 3,
+              "test scenarios drawn as trajectory figures (the first ones)", 0, 100000)
+      .AddInt("eval.trajectory_starts", 5,
+              "runs per model in each trajectory figure: the test start plus perturbed starts", 1,
+              100);
+  return schema;
+}
+
+std::vector<Policy> LoadPolicies(const std::vector<std::string>& paths,
+                                 const std::vector<std::string>& names) {
+  if (!names.empty() && names.size() != paths.size()) {
+    throw UserError("--name: " + std::to_string(names.size()) + " names for " +
+                    std::to_string(paths.size()) + " policies");
+  }
+  std::vector<Policy> policies;
+  for (std::size_t m = 0; m < paths.size(); ++m) {
+    const std::string name = names.empty() ? DefaultPolicyName(paths[m]) : names[m];
+    RequireSafeName(name, names.empty() ? paths[m] : "--name");
+    for (const Policy& other : policies) {
+      if (other.name() == name) {
+        throw UserError(paths[m] + ": model name '" + name + "' is already used by " +
+                        other.path().string() + " (give --name)");
+      }
+    }
+    policies.emplace_back(paths[m], name);
+  }
+  return policies;
+}
+
+std::vector<std::vector<EpisodeOutcome>> RunWithProgress(
+    std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
+    const EnvironmentConfig& env_config, int threads, const std::string& label) {
+  ProgressBar progress(label, static_cast<std::int64_t>(policies.size() * episodes.size()),
+                       "episodes");
+  auto outcomes = RunEpisodes(policies, episodes, env_config, threads,
+                              [&](int finished, int) { progress.Update(finished); });
+  progress.Finish();
+  return outcomes;
+}
+
+std::vector<std::vector<EpisodeMetrics>> MetricsOf(
+    const std::vector<std::vector<EpisodeOutcome>>& outcomes) {
+  std::vector<std::vector<EpisodeMetrics>> metrics(outcomes.size());
+  for (std::size_t m = 0; m < outcomes.size(); ++m) {
+    for (const EpisodeOutcome& outcome : outcomes[m]) metrics[m].push_back(outcome.metrics);
+  }
+  return metrics;
+}
+
+// One picture per scenario file and model, of the single run.
+void PlotScenarioFileRuns(const std::vector<Policy>& policies,
+                          const std::vector<EvaluationEpisode>& episodes,
+                          const std::vector<std::vector<EpisodeOutcome>>& outcomes,
+                          const std::filesystem::path& out) {
+  for (std::size_t e = 0; e < episodes.size(); ++e) {
+    for (std::size_t m = 0; m < policies.size(); ++m) {
+      PlotTrajectories(episodes[e].scenario, episodes[e].name, policies[m].name(), {outcomes[m][e]},
+                       {policies[m].name()},
+                       TrajectoryFigurePath(out, episodes[e].name, policies[m].name()));
+    }
+  }
+}
+
+// The paper's trajectory figure: for the first test scenarios, each model from the test start and
+// from perturbed starts, one picture per scenario and model.
+void PlotTestTrajectories(std::vector<Policy>& policies,
+                          const std::vector<EvaluationEpisode>& episodes,
+                          const std::vector<std::vector<EpisodeOutcome>>& outcomes,
+                          const Config& config, const EnvironmentConfig& env_config, int threads,
+                          const std::filesystem::path& out) {
+  const int pictured = std::min<int>(static_cast<int>(config.GetInt("eval.trajectory_scenarios")),
+                                     static_cast<int>(episodes.size()));
+  const int starts = static_cast<int>(config.GetInt("eval.trajectory_starts"));
+  const std::uint64_t seed = static_cast<std::uint64_t>(config.GetInt("eval.seed"));
+  std::vector<EvaluationEpisode> perturbed;  // scenario e's start s at e * (starts - 1) + s - 1
+  for (int e = 0; e < pictured; ++e) {
+    for (int s = 1; s < starts; ++s) perturbed.push_back(WithPerturbedStart(episodes[e], seed, s));
+  }
+  // A separate batch, so the test episodes' results do not depend on the figure settings.
+  const auto perturbed_outcomes =
+      perturbed.empty()
+          ? std::vector<std::vector<EpisodeOutcome>>(policies.size())
+          : RunWithProgress(policies, perturbed, env_config, threads, "trajectory starts");
+  std::vector<std::string> labels = {"test start"};
+  for (int s = 1; s < starts; ++s) labels.push_back("start " + std::to_string(s));
+  for (int e = 0; e < pictured; ++e) {
+    for (std::size_t m = 0; m < policies.size(); ++m) {
+      std::vector<EpisodeOutcome> runs = {outcomes[m][e]};
+      for (int s = 1; s < starts; ++s) {
+        runs.push_back(perturbed_outcomes[m][e * (starts - 1) + s - 1]);
+      }
+      PlotTrajectories(episodes[e].scenario, episodes[e].name, policies[m].name(), runs, labels,
+                       TrajectoryFigurePath(out, episodes[e].name, policies[m].name()));
+    }
+  }
+}
+
+int Evaluate(int argc, char** argv) {
+  CLI::App app{
+      "Runs trained policies (TorchScript policy.pt) with deterministic actions on the shared "
+      "test\n"
+      "scenarios (training worlds from a fixed list of seeds, test mode) or on scenario files, "
+      "and\n"
+      "writes OUT/episodes.csv, OUT/summary.json, OUT/summary.md (mean and Student-t 95 % CI per\n"
+      "model, paired differences between models) and trajectory figures in OUT/figures/."};
+  std::vector<std::string> policy_paths;
+  std::vector<std::string> names;
+  std::vector<std::string> scenario_files;
+  std::string out;
+  app.add_option("--policy", policy_paths, "policy file (TorchScript), repeatable")->required();
+  app.add_option("--name", names, "model name of each --policy, in order (default: run folder)");
+  auto* scenario_option = app.add_option("--scenario", scenario_files,
+                                         "evaluate on these scenario files instead, repeatable");
+  app.add_option("--out", out, "output folder")->required();
+  ConfigFlags config_flags(app, EvaluateSchema());
+  config_flags.AddFlag("--episodes", "eval.episodes")->excludes(scenario_option);
+  config_flags.AddFlag("--seed", "eval.seed");
+  config_flags.AddFlag("--threads", "eval.threads");
+  config_flags.AddFlag("--trajectories", "eval.trajectory_scenarios");
+  config_flags.AddFlag("--trajectory-starts", "eval.trajectory_starts");
+  ParseCommandLine(app, argc, argv);
+  const Config config = config_flags.Resolve();
+
+  const auto start = std::chrono::steady_clock::now();
+  const int threads = config.GetInt("eval.threads") > 0
+                          ? static_cast<int>(config.GetInt("eval.threads"))
+                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  // The policies' matrices are small: the episodes run in parallel instead, and LibTorch's
+  // OpenMP threads would only spin against the episode threads (30x slower on 2 busy cores).
+  at::set_num_threads(1);
+  const EnvironmentConfig env_config = EnvironmentConfigFrom(config);
+  // Every input is checked before the output folder is touched.
+  std::vector<Policy> policies = LoadPolicies(policy_paths, names);
+  const bool on_files = !scenario_files.empty();
+  const std::uint64_t seed = static_cast<std::uint64_t>(config.GetInt("eval.seed"));
+  const std::vector<EvaluationEpisode> episodes =
+      on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
+               : TestEpisodes(seed, static_cast<int>(config.GetInt("eval.episodes")));
+  const RunFolder folder = RunFolder::Create(out, "evaluate");
+  InitLogging("evaluate", folder.LogPath(), false);
+  folder.WriteResolvedConfig(config);
+  spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),
+               on_files ? "scenario files" : "test scenarios");
+
+  const auto outcomes = RunWithProgress(policies, episodes, env_config, threads, "evaluate");
+  const double evaluation_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::vector<std::string> model_names;
+  std::vector<std::string> model_policies;
+  for (const Policy& policy : policies) {
+    model_names.push_back(policy.name());
+    model_policies.push_back(policy.path().string());
+  }
+  const EvaluationReport report = MakeEvaluationReport(
+      on_files ? "files" : "test", on_files ? std::nullopt : std::optional<std::uint64_t>(seed),
+      model_names, model_policies, MetricsOf(outcomes));
+  WriteTextFileAtomically(folder.path() / "episodes.csv",
+                          EpisodeTable(model_names, episodes, outcomes));
+  WriteTextFileAtomically(folder.path() / "summary.json",
+                          EvaluationReportJson(report).dump(2) + "\n");
+  const std::string markdown = EvaluationReportMarkdown(report);
+  WriteTextFileAtomically(folder.path() / "summary.md", markdown);
+  std::cout << markdown;
+
+  if (on_files) {
+    PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());
+  } else {
+    PlotTestTrajectories(policies, episodes, outcomes, config, env_config, threads, folder.path());
+  }
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("evaluation_s: %.2f\nwall_s: %.2f\n", evaluation_s, wall_s);
+  return 0;
+}
+
+}  // namespace
+}  // namespace colav
+
+int main(int argc, char** argv) {
+  return colav::RunProgram("evaluate", argc, argv, colav::Evaluate);
+}
