@@ -13,7 +13,7 @@ constexpr int kSpinPolls = 2000;
 
 ThreadPool::ThreadPool(int num_threads) {
   for (int worker = 1; worker < std::max(1, num_threads); ++worker) {
-    workers_.emplace_back([this, worker] { WorkerLoop(worker); });
+    workers_.emplace_back([this] { WorkerLoop(); });
   }
 }
 
@@ -26,12 +26,12 @@ ThreadPool::~ThreadPool() {
   for (std::thread& thread : workers_) thread.join();
 }
 
-void ThreadPool::RunChunk(int chunk) {
-  const int chunks = num_threads();
-  const int begin = count_ * chunk / chunks;
-  const int end = count_ * (chunk + 1) / chunks;
+void ThreadPool::RunClaimedIndices() {
   try {
-    for (int i = begin; i < end; ++i) (*body_)(i);
+    for (int i = next_index_.fetch_add(1, std::memory_order_relaxed); i < count_;
+         i = next_index_.fetch_add(1, std::memory_order_relaxed)) {
+      (*body_)(i);
+    }
   } catch (...) {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (!error_) error_ = std::current_exception();
@@ -48,11 +48,12 @@ void ThreadPool::ParallelFor(int count, const std::function<void(int)>& body) {
     body_ = &body;
     count_ = count;
     error_ = nullptr;
+    next_index_.store(0, std::memory_order_relaxed);
     pending_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
-  RunChunk(0);
+  RunClaimedIndices();
   while (pending_.load(std::memory_order_acquire) != 0) std::this_thread::yield();
   if (error_) std::rethrow_exception(error_);
 }
@@ -68,11 +69,11 @@ bool ThreadPool::WaitForWork(std::uint64_t seen) {
   return !stopping_;
 }
 
-void ThreadPool::WorkerLoop(int worker) {
+void ThreadPool::WorkerLoop() {
   std::uint64_t seen = 0;
   while (WaitForWork(seen)) {
     seen = generation_.load(std::memory_order_acquire);
-    RunChunk(worker);
+    RunClaimedIndices();
     pending_.fetch_sub(1, std::memory_order_acq_rel);
   }
 }

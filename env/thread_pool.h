@@ -24,13 +24,14 @@ class ThreadPool {
 
   int num_threads() const { return static_cast<int>(workers_.size()) + 1; }
 
-  /// Calls body(i) for i in [0, count), split into contiguous chunks, one per thread; returns
-  /// when all calls are done. An exception of body is rethrown in the caller.
+  /// Calls body(i) for i in [0, count); threads claim the next index as they become free (worlds
+  /// that reset cost many steps, so fixed chunks would leave one core idle). Returns when all
+  /// calls are done. An exception of body is rethrown in the caller.
   void ParallelFor(int count, const std::function<void(int)>& body);
 
  private:
-  void WorkerLoop(int worker);
-  void RunChunk(int chunk);
+  void WorkerLoop();
+  void RunClaimedIndices();
   /// Waits until generation_ differs from `seen` or the pool stops; false when stopping.
   bool WaitForWork(std::uint64_t seen);
 
@@ -39,6 +40,7 @@ class ThreadPool {
   std::condition_variable wake_;
   const std::function<void(int)>* body_ = nullptr;
   int count_ = 0;
+  std::atomic<int> next_index_{0};
   std::atomic<std::uint64_t> generation_{0};
   std::atomic<int> pending_{0};
   std::atomic<bool> stopping_{false};
