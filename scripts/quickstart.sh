@@ -1,25 +1,23 @@
 #!/usr/bin/env bash
-# The README's main command: installs what is missing, builds, then runs the main job with
-# built-in defaults into runs/quickstart/: a training world of the paper driven by a
-# line-of-sight pilot, its trace and picture, and the simulator's speed.
-# (The learning pipeline joins this script as its stages land.)
+# The README's main command: installs what is missing, builds, then runs the paper's pipeline
+# (scripts/reproduce_paper.sh) at a small scale into runs/quickstart: a smaller dataset, one
+# Shallow VAE seed, one PPO agent (Shallow, locked) with a short budget, evaluation on the shared
+# test scenarios and the named scenario files, and runs/quickstart/REPORT.md with its figures.
+# Any setting of reproduce_paper.sh can be overridden from the environment, e.g.
+#   PPO_STEPS=500000 scripts/quickstart.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/build.sh
-out=${OUT:-runs/quickstart}
-mkdir -p "$out"
-seed=${SEED:-7}
-
-# simulate replays fixed actions: full thrust with a gentle sine rudder shows the world and the
-# sensing of the vessel.
-actions="$out/actions.csv"
-awk 'BEGIN { print "a0,a1"; for (k = 0; k < 600; ++k) printf "1,%.6f\n", 0.3 * sin(2 * 3.14159265 * k / 120) }' > "$actions"
-build/bin/simulate --training-seed "$seed" --actions "$actions" --out "$out/trace.csv" \
-  --plot "$out/scene.png" --save-scenario "$out/scenario.yaml"
-for scenario in configs/scenarios/*.yaml; do
-  name=$(basename "$scenario" .yaml)
-  build/bin/simulate --scenario "$scenario" --actions "$actions" --out "$out/$name.trace.csv" \
-    --plot "$out/$name.png"
-done
-build/bin/bench_env --seconds 2 | tee "$out/bench_env.txt"
-echo "quickstart: outputs in $out (scene.png, trace.csv, scenario.yaml, one picture per named scenario)"
+export SKIP_BUILD=1
+export OUT=${OUT:-runs/quickstart}
+export TITLE=${TITLE:-"Quickstart: the paper's pipeline at a small scale"}
+export SIM_SCANS=${SIM_SCANS:-2000}
+export SYNTHETIC_SCANS=${SYNTHETIC_SCANS:-2000}
+export VAE_MODELS=${VAE_MODELS:-shallow}
+export VAE_SEEDS=${VAE_SEEDS:-1}
+export VAE_EPOCHS=${VAE_EPOCHS:-10}
+export VAE_FIGURES=${VAE_FIGURES:-0}
+export PPO_CONFIGS=${PPO_CONFIGS:-shallow_locked}
+export PPO_STEPS=${PPO_STEPS:-300000}
+export BETAS=${BETAS-}
+exec scripts/reproduce_paper.sh
