@@ -92,7 +92,8 @@ void PlotTrainingCurves(const std::vector<TrainingRun>& runs, std::size_t window
   script << "set multiplot layout 2,2 title "
          << GnuplotQuote(GnuplotEnhancedText(title) + " (rolling mean and sd over " +
                          std::to_string(window) + " episodes)")
-         << "\nset grid lc rgb '#dddddd'\nset xlabel 'environment steps (millions)'\n";
+         << "\nset grid lc rgb '#dddddd'\nset xlabel 'environment steps (millions)'\n"
+         << "set autoscale xfix\n";  // the x axis ends at the last step, not the next tic
   for (std::size_t panel = 0; panel < kPanels.size(); ++panel) script << PanelPlot(runs, panel);
   script << "unset multiplot\n";
   RenderGnuplotPng(script.str(), png, 1400, 1000);

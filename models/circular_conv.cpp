@@ -48,8 +48,7 @@ torch::autograd::variable_list CircularConv1dFunction::backward(
   return {x_gradient, weight_gradient, bias_gradient, torch::Tensor(), torch::Tensor()};
 }
 
-CircularConv1dImpl::CircularConv1dImpl(CircularConv1dOptions options)
-    : options_(options) {
+CircularConv1dImpl::CircularConv1dImpl(CircularConv1dOptions options) : options_(options) {
   weight = register_parameter(
       "weight",
       torch::empty({options_.out_channels(), options_.in_channels(), options_.kernel_size()}));

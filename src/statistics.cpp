@@ -45,8 +45,8 @@ double IncompleteBetaFraction(double a, double b, double x) {
 double RegularisedIncompleteBeta(double a, double b, double x) {
   if (x <= 0.0) return 0.0;
   if (x >= 1.0) return 1.0;
-  const double log_front = std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) +
-                           a * std::log(x) + b * std::log1p(-x);
+  const double log_front =
+      std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
   const double front = std::exp(log_front);
   if (x < (a + 1.0) / (a + b + 2.0)) return front * IncompleteBetaFraction(a, b, x) / a;
   return 1.0 - front * IncompleteBetaFraction(b, a, 1.0 - x) / b;
@@ -97,8 +97,7 @@ MeanConfidenceInterval Summarise(const std::vector<double>& values, double level
   summary.sd = SampleStandardDeviation(values);
   if (values.size() >= 2) {
     const double n = static_cast<double>(values.size());
-    summary.half_width =
-        StudentTQuantile(0.5 + level / 2.0, n - 1.0) * summary.sd / std::sqrt(n);
+    summary.half_width = StudentTQuantile(0.5 + level / 2.0, n - 1.0) * summary.sd / std::sqrt(n);
   }
   summary.low = summary.mean - summary.half_width;
   summary.high = summary.mean + summary.half_width;

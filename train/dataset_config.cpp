@@ -23,8 +23,10 @@ ConfigSchema DatasetGenerationSchema() {
       .AddInt("dataset.threads", 2, "worker threads (the output does not depend on it)", 1, 256)
       .AddDouble("dataset.mixed_share", 0.5, "share of synthetic scans with 3 circles + 2 vessels",
                  0.0, 1.0)
-      .AddDouble("dataset.vessels_share", 0.25, "share of synthetic scans with 5 vessels (5 circles: "
-                 "the rest)", 0.0, 1.0)
+      .AddDouble("dataset.vessels_share", 0.25,
+                 "share of synthetic scans with 5 vessels (5 circles: "
+                 "the rest)",
+                 0.0, 1.0)
       .AddInt("augmentation.shifts_per_scan", 2, "random circular shifts added per scan", 0, 179)
       .AddDouble("augmentation.test_fraction", 0.3, "share of source scans in the test split", 0.0,
                  1.0)
@@ -36,7 +38,8 @@ ConfigSchema DatasetGenerationSchema() {
                  1.0)
       .AddDouble("synthetic.safe_zone_radius", 10.0, "obstacle-free disc around the sensor (m)",
                  0.0, 140.0)
-      .AddDouble("pilot.heading_gain", 1.0, "yaw action per rad of line-of-sight heading error", 0.0)
+      .AddDouble("pilot.heading_gain", 1.0, "yaw action per rad of line-of-sight heading error",
+                 0.0)
       .AddDouble("pilot.yaw_rate_gain", 5.0, "yaw action per rad/s of yaw rate (damping)", 0.0)
       .AddDouble("pilot.steering_noise_sd", 0.2, "Gaussian noise on the yaw action", 0.0)
       .AddDouble("pilot.thrust_min", -0.2, "lowest thrust action level", -1.0, 1.0)

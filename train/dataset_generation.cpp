@@ -24,8 +24,8 @@ std::vector<RangeScan> GenerateSyntheticScans(ScanGroup group, std::int64_t coun
       count, options.threads,
       [&](std::int64_t j) {
         Rng rng = MakeRng(options.seed, stream, static_cast<std::uint64_t>(j));
-        scans[static_cast<std::size_t>(j)] =
-            ScanSyntheticScene(SampleSyntheticScene(rng, ObstacleCountsOf(group), options.synthetic));
+        scans[static_cast<std::size_t>(j)] = ScanSyntheticScene(
+            SampleSyntheticScene(rng, ObstacleCountsOf(group), options.synthetic));
         ++done;
       },
       poll);
@@ -38,9 +38,8 @@ ScanDataset GenerateScanDataset(const DatasetGenerationOptions& options,
   std::atomic<std::int64_t> synthesised{0};
   const auto poll = [&] { progress(recorded + synthesised); };
 
-  std::vector<RangeScan> scans = RecordSimulatorScans(options.sim_scans, options.seed,
-                                                      options.simulator, options.threads,
-                                                      recorded, poll);
+  std::vector<RangeScan> scans = RecordSimulatorScans(
+      options.sim_scans, options.seed, options.simulator, options.threads, recorded, poll);
   std::vector<ScanGroup> groups(scans.size(), ScanGroup::kSimulator);
   const std::vector<std::int64_t> sizes = SyntheticGroupSizes(options.synthetic_scans, options);
   for (std::size_t g = 0; g < kSyntheticGroups.size(); ++g) {

@@ -8,10 +8,10 @@
 namespace colav {
 
 enum class ScanGroup : std::int64_t {
-  kSimulator = 0,          ///< recorded in the training environment under the scripted pilot
-  kSyntheticMixed = 1,     ///< synthetic: 3 circles + 2 vessels
-  kSyntheticVessels = 2,   ///< synthetic: 5 vessels
-  kSyntheticCircles = 3,   ///< synthetic: 5 circles
+  kSimulator = 0,         ///< recorded in the training environment under the scripted pilot
+  kSyntheticMixed = 1,    ///< synthetic: 3 circles + 2 vessels
+  kSyntheticVessels = 2,  ///< synthetic: 5 vessels
+  kSyntheticCircles = 3,  ///< synthetic: 5 circles
 };
 inline constexpr int kNumScanGroups = 4;
 

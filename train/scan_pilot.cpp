@@ -21,9 +21,10 @@ std::array<double, kActionSize> ScriptedPilot::Act(const World& world) {
 
 double ScriptedPilot::SteeringAction(const World& world) {
   if (turn_steps_left_ == 0 && Uniform01(rng_) < options_.evasive_turn_probability) {
-    turn_steps_left_ = options_.evasive_turn_min_steps +
-                       static_cast<int>(UniformIndex(
-                           rng_, options_.evasive_turn_max_steps - options_.evasive_turn_min_steps + 1));
+    turn_steps_left_ =
+        options_.evasive_turn_min_steps +
+        static_cast<int>(UniformIndex(
+            rng_, options_.evasive_turn_max_steps - options_.evasive_turn_min_steps + 1));
     turn_direction_ = Uniform01(rng_) < 0.5 ? -1.0 : 1.0;
   }
   if (turn_steps_left_ > 0) {

@@ -14,10 +14,10 @@
 namespace colav {
 
 struct ScriptedPilotOptions {
-  double heading_gain = 1.0;         ///< k: yaw action per radian of heading error
-  double yaw_rate_gain = 5.0;        ///< kd: yaw action per rad/s of yaw rate (damping)
-  double steering_noise_sd = 0.2;    ///< Gaussian noise added to the yaw action every step
-  double thrust_min = -0.2;          ///< thrust action levels are uniform in [min, max]
+  double heading_gain = 1.0;       ///< k: yaw action per radian of heading error
+  double yaw_rate_gain = 5.0;      ///< kd: yaw action per rad/s of yaw rate (damping)
+  double steering_noise_sd = 0.2;  ///< Gaussian noise added to the yaw action every step
+  double thrust_min = -0.2;        ///< thrust action levels are uniform in [min, max]
   double thrust_max = 1.0;
   double thrust_change_probability = 0.02;  ///< per step: draw a new thrust level
   double evasive_turn_probability = 0.01;   ///< per step: start a full-rudder turn

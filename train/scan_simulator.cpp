@@ -13,8 +13,8 @@ namespace {
 
 int DrawSampleInterval(Rng& rng, const SimulatorRecordingOptions& options) {
   return options.sample_interval_min +
-         static_cast<int>(UniformIndex(
-             rng, options.sample_interval_max - options.sample_interval_min + 1));
+         static_cast<int>(
+             UniformIndex(rng, options.sample_interval_max - options.sample_interval_min + 1));
 }
 
 RangeScan ToRangeScan(const std::array<double, kNumRays>& ranges) {

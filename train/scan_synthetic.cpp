@@ -37,8 +37,7 @@ bool Clears(const CircleSpec& circle, const SyntheticScene& scene, const CircleS
   return true;
 }
 
-bool Clears(const ConvexPolygon& vessel, const SyntheticScene& scene,
-            const CircleSpec& safe_zone) {
+bool Clears(const ConvexPolygon& vessel, const SyntheticScene& scene, const CircleSpec& safe_zone) {
   if (CirclePolygonOverlap(safe_zone, vessel)) return false;
   for (const CircleSpec& circle : scene.circles) {
     if (CirclePolygonOverlap(circle, vessel)) return false;

@@ -15,9 +15,9 @@
 namespace colav {
 
 struct SyntheticSceneOptions {
-  double radius_mean = 25.0;     ///< Poisson mean of a circle's radius (m)
-  double width_mean = 10.0;      ///< Poisson mean of a vessel's width (m)
-  double extent = 150.0;         ///< centres uniform in [-extent, extent]^2 (m)
+  double radius_mean = 25.0;       ///< Poisson mean of a circle's radius (m)
+  double width_mean = 10.0;        ///< Poisson mean of a vessel's width (m)
+  double extent = 150.0;           ///< centres uniform in [-extent, extent]^2 (m)
   double safe_zone_radius = 10.0;  ///< no obstacle may touch this disc around the sensor (m)
 };
 

@@ -21,7 +21,8 @@ std::string PolarDataBlock(const std::string& name, const torch::Tensor& ranges)
   const auto values = ranges.accessor<float, 1>();
   for (int k = 0; k <= kNumRays; ++k) {
     const int i = k % kNumRays;
-    const double bearing = kPi / 2.0 + RangeFinder::kVesselFirstRayAngle + i * RangeFinder::kRaySpacing;
+    const double bearing =
+        kPi / 2.0 + RangeFinder::kVesselFirstRayAngle + i * RangeFinder::kRaySpacing;
     block << bearing << ' ' << values[i] << '\n';
   }
   block << "EOD\n";
@@ -56,8 +57,8 @@ std::vector<std::int64_t> PickScans(const torch::Tensor& scans, std::int64_t cou
                                     std::uint64_t seed, bool near_seam, std::int64_t seam_rays) {
   torch::Tensor seen = scans;
   if (near_seam) {
-    seen = torch::cat({scans.narrow(1, 0, seam_rays), scans.narrow(1, kNumRays - seam_rays, seam_rays)},
-                      1);
+    seen = torch::cat(
+        {scans.narrow(1, 0, seam_rays), scans.narrow(1, kNumRays - seam_rays, seam_rays)}, 1);
   }
   const torch::Tensor eligible = seen.amax(1).gt(0.05);
   torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(seed);
@@ -89,8 +90,8 @@ void DrawPolarReconstructions(const torch::Tensor& scans, const std::vector<Conv
         RangesFromCloseness(MeanReconstruction(model, scans), transform).to(torch::kFloat32);
     for (std::int64_t s = 0; s < columns; ++s) {
       script << PolarDataBlock("in", inputs[s].contiguous())
-             << PolarDataBlock("out", reconstructions[s].contiguous())
-             << "set title " << GnuplotQuote(model_names[static_cast<std::size_t>(m)]) << "\n"
+             << PolarDataBlock("out", reconstructions[s].contiguous()) << "set title "
+             << GnuplotQuote(model_names[static_cast<std::size_t>(m)]) << "\n"
              << "plot $in using 1:2 with lines lw 2 lc rgb '#1f4fd0', "
                 "$out using 1:2 with lines lw 2 lc rgb '#e02020'\n";
     }
@@ -112,8 +113,9 @@ void DrawTrainingCurves(const std::vector<std::vector<EpochLosses>>& histories, 
     }
     script << "EOD\n";
     plots << (s == 0 ? "plot " : ", ") << "$seed" << s
-          << " using 1:2 with lines lw 2 lc rgb '#1f4fd0' title " << (s == 0 ? "'train (noisy)'" : "''")
-          << ", $seed" << s << " using 1:3 with lines lw 2 dt 2 lc rgb '#e02020' title "
+          << " using 1:2 with lines lw 2 lc rgb '#1f4fd0' title "
+          << (s == 0 ? "'train (noisy)'" : "''") << ", $seed" << s
+          << " using 1:3 with lines lw 2 dt 2 lc rgb '#e02020' title "
           << (s == 0 ? "'validation'" : "''");
   }
   script << "set title " << GnuplotQuote(title) << "\nset xlabel 'epoch'\n"

@@ -32,9 +32,8 @@ DensityGrid GaussianKde2d(const torch::Tensor& points, int size) {
   const torch::Tensor centred = p - p.mean(0);
   // Kernel covariance H = cov * n^(-2/6); a tiny ridge keeps a degenerate (collapsed) latent
   // drawable.
-  const torch::Tensor covariance =
-      centred.t().mm(centred) / (n - 1.0) * std::pow(n, -1.0 / 3.0) +
-      1e-9 * torch::eye(2, torch::kDouble);
+  const torch::Tensor covariance = centred.t().mm(centred) / (n - 1.0) * std::pow(n, -1.0 / 3.0) +
+                                   1e-9 * torch::eye(2, torch::kDouble);
   const torch::Tensor cholesky = torch::linalg_cholesky(covariance);
   const torch::Tensor whitening = torch::linalg_inv(cholesky).t();  // row vectors: v W
   const double normaliser = 1.0 / (2.0 * kPi * cholesky.diagonal().prod().item<double>() * n);

@@ -27,8 +27,8 @@ VaeTrainer::VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, s
     : options_(options),
       data_(data),
       seed_(seed),
-      noisy_train_(
-          WithTrainingNoise(data.train, options.train_noise_variance, DeriveSeed(seed, "vae.noise"))),
+      noisy_train_(WithTrainingNoise(data.train, options.train_noise_variance,
+                                     DeriveSeed(seed, "vae.noise"))),
       shuffled_train_(torch::empty_like(noisy_train_)),
       model_(MakeVae(options.model, seed)),
       optimizer_(model_->parameters(), options.learning_rate) {}
@@ -37,7 +37,8 @@ EpochLosses VaeTrainer::RunEpoch(std::int64_t epoch,
                                  const std::function<void(std::int64_t, double)>& on_batch) {
   const auto start = std::chrono::steady_clock::now();
   const std::int64_t count = noisy_train_.size(0);
-  torch::Generator shuffle = SeededGenerator(seed_, "vae.shuffle", static_cast<std::uint64_t>(epoch));
+  torch::Generator shuffle =
+      SeededGenerator(seed_, "vae.shuffle", static_cast<std::uint64_t>(epoch));
   torch::Generator sample = SeededGenerator(seed_, "vae.sample", static_cast<std::uint64_t>(epoch));
   // One gather per epoch; the minibatches are then contiguous views.
   torch::index_select_out(shuffled_train_, noisy_train_, 0,
@@ -56,7 +57,8 @@ EpochLosses VaeTrainer::RunEpoch(std::int64_t epoch,
     bce_sum += static_cast<double>(*loss.bce.data_ptr<float>()) * static_cast<double>(size);
     kl_sum += static_cast<double>(*loss.kl.data_ptr<float>()) * static_cast<double>(size);
     if (on_batch) {
-      on_batch(begin + size, (bce_sum + options_.beta * kl_sum) / static_cast<double>(begin + size));
+      on_batch(begin + size,
+               (bce_sum + options_.beta * kl_sum) / static_cast<double>(begin + size));
     }
   }
 

@@ -1,5 +1,5 @@
-// One VAE training run (one seed) in memory: Adam (LoopAdam) on the batch-averaged loss BCE + beta * KL
-// (models/vae_loss.h), the whole training split in one tensor, shuffled once per epoch by a
+// One VAE training run (one seed) in memory: Adam (LoopAdam) on the batch-averaged loss BCE + beta
+// * KL (models/vae_loss.h), the whole training split in one tensor, shuffled once per epoch by a
 // seeded permutation and cut into contiguous minibatches (no per-sample copies), then a
 // validation pass without autograd.
 //

@@ -45,7 +45,8 @@ void LoopAdam::Step() {
     for (std::int64_t i = 0; i < parameter.numel(); ++i) {
       m[i] = beta1 * m[i] + (1.0F - beta1) * g[i];
       v[i] = beta2 * v[i] + (1.0F - beta2) * g[i] * g[i];
-      const double denominator = std::sqrt(static_cast<double>(v[i])) / bias_correction2_sqrt + kEpsilon;
+      const double denominator =
+          std::sqrt(static_cast<double>(v[i])) / bias_correction2_sqrt + kEpsilon;
       p[i] -= static_cast<float>(step_size * m[i] / denominator);
     }
   }

@@ -14,8 +14,11 @@ torch::Tensor HistoryTensor(const std::vector<EpochLosses>& history) {
   auto rows = table.accessor<double, 2>();
   for (std::size_t e = 0; e < history.size(); ++e) {
     const EpochLosses& h = history[e];
-    const double values[kHistoryColumns] = {static_cast<double>(h.epoch), h.train_bce,
-                                            h.train_kl, h.validation_bce, h.validation_kl,
+    const double values[kHistoryColumns] = {static_cast<double>(h.epoch),
+                                            h.train_bce,
+                                            h.train_kl,
+                                            h.validation_bce,
+                                            h.validation_kl,
                                             h.seconds};
     for (int c = 0; c < kHistoryColumns; ++c) rows[static_cast<std::int64_t>(e)][c] = values[c];
   }
@@ -46,9 +49,8 @@ void SaveVaeCheckpoint(const std::filesystem::path& path, const std::string& sig
   archive.write("signature", c10::IValue(signature));
   archive.write("history", HistoryTensor(progress.history));
   archive.write("seconds", torch::tensor(progress.seconds, torch::kDouble));
-  WriteFileAtomically(path, [&](const std::filesystem::path& temporary) {
-    archive.save_to(temporary.string());
-  });
+  WriteFileAtomically(
+      path, [&](const std::filesystem::path& temporary) { archive.save_to(temporary.string()); });
 }
 
 VaeProgress LoadVaeCheckpoint(const std::filesystem::path& path, const std::string& signature,

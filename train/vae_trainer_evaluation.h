@@ -13,10 +13,10 @@
 namespace colav {
 
 struct VaeEvaluation {
-  double total = 0.0;  ///< mean per-sample bce + beta * kl
-  double bce = 0.0;    ///< mean per-sample BCE (summed over the scan)
-  double kl = 0.0;     ///< mean per-sample KL (summed over the latent)
-  torch::Tensor kl_per_dimension;  ///< [latent] mean KL of each latent dimension
+  double total = 0.0;                  ///< mean per-sample bce + beta * kl
+  double bce = 0.0;                    ///< mean per-sample BCE (summed over the scan)
+  double kl = 0.0;                     ///< mean per-sample KL (summed over the latent)
+  torch::Tensor kl_per_dimension;      ///< [latent] mean KL of each latent dimension
   std::int64_t active_dimensions = 0;  ///< dimensions whose mean KL exceeds 0.01 nats
 };
 

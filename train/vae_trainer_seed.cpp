@@ -49,8 +49,8 @@ std::string VaeRunSignature(const VaeTrainingOptions& options, std::int64_t inde
   signature << DescribeVae(options) << "; data " << options.data_path << " ("
             << (options.transform == ClosenessTransform::kLog ? "log" : "linear") << ", noise "
             << options.train_noise_variance << "); batch " << options.batch_size << ", lr "
-            << options.learning_rate << ", epochs " << options.epochs << "; seed "
-            << options.seed << "/" << index;
+            << options.learning_rate << ", epochs " << options.epochs << "; seed " << options.seed
+            << "/" << index;
   return signature.str();
 }
 
@@ -74,15 +74,15 @@ SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, st
   bar_options.initial_done = static_cast<std::int64_t>(progress.history.size()) * train_size;
   ProgressBar bar("seed " + std::to_string(index), options.epochs * train_size, "scans",
                   bar_options);
-  for (auto epoch = static_cast<std::int64_t>(progress.history.size()) + 1;
-       epoch <= options.epochs; ++epoch) {
+  for (auto epoch = static_cast<std::int64_t>(progress.history.size()) + 1; epoch <= options.epochs;
+       ++epoch) {
     std::int64_t batches = 0;
     const std::int64_t done_before = (epoch - 1) * train_size;
     progress.history.push_back(trainer.RunEpoch(epoch, [&](std::int64_t done, double loss) {
       if (++batches % kProgressInterval != 0) return;
-      bar.Update(done_before + done, {{"epoch", std::to_string(epoch) + "/" +
-                                                    std::to_string(options.epochs)},
-                                      {"loss", std::to_string(loss)}});
+      bar.Update(done_before + done,
+                 {{"epoch", std::to_string(epoch) + "/" + std::to_string(options.epochs)},
+                  {"loss", std::to_string(loss)}});
     }));
     progress.seconds = seconds_before + SecondsSince(start);
     const EpochLosses& last = progress.history.back();
@@ -101,9 +101,9 @@ SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, st
 
   ExportEncoder(trainer.model()->encoder(), seed_dir / "encoder.pt");
   ExportVae(trainer.model(), seed_dir / "vae.pt");
-  const VaeEvaluation test = EvaluateVae(trainer.model(), data.test, options.beta,
-                                         DeriveSeed(trainer.seed(), "vae.test"),
-                                         options.evaluation_batch_size);
+  const VaeEvaluation test =
+      EvaluateVae(trainer.model(), data.test, options.beta, DeriveSeed(trainer.seed(), "vae.test"),
+                  options.evaluation_batch_size);
   result.index = index;
   result.seed = trainer.seed();
   result.test_error = test.total;

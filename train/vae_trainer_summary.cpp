@@ -123,10 +123,8 @@ void WriteRunSummary(const std::filesystem::path& run_dir, const VaeTrainingOpti
       Summarise(Collect(results, [](const SeedResult& r) { return r.test_error; }));
   const MeanConfidenceInterval seconds =
       Summarise(Collect(results, [](const SeedResult& r) { return r.seconds; }));
-  const MeanConfidenceInterval active =
-      Summarise(Collect(results, [](const SeedResult& r) {
-        return static_cast<double>(r.active_dimensions);
-      }));
+  const MeanConfidenceInterval active = Summarise(Collect(
+      results, [](const SeedResult& r) { return static_cast<double>(r.active_dimensions); }));
   nlohmann::json seeds = nlohmann::json::array();
   for (const SeedResult& result : results) {
     nlohmann::json entry = SeedResultToJson(result);
@@ -143,8 +141,7 @@ void WriteRunSummary(const std::filesystem::path& run_dir, const VaeTrainingOpti
       {"epochs", options.epochs},
       {"data", options.data_path},
       {"test_error", IntervalJson(test_error)},
-      {"test_error_per_seed",
-       Collect(results, [](const SeedResult& r) { return r.test_error; })},
+      {"test_error_per_seed", Collect(results, [](const SeedResult& r) { return r.test_error; })},
       {"active_dims", IntervalJson(active)},
       {"seconds_per_seed", IntervalJson(seconds)},
       {"seeds", seeds}};

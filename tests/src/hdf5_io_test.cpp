@@ -186,7 +186,8 @@ std::string PythonWithH5py() {
 // The Python tools (h5py) must read what we write, strings as str.
 TEST_F(Hdf5IoTest, H5pyReadsTheFile) {
   const std::string python = PythonWithH5py();
-  ASSERT_FALSE(python.empty()) << "no python3 with h5py (install python3-h5py: scripts/install_deps.sh)";
+  ASSERT_FALSE(python.empty())
+      << "no python3 with h5py (install python3-h5py: scripts/install_deps.sh)";
   Hdf5File::CreateAtomically(path_, [](Hdf5File& file) {
     file.WriteFloatMatrix("/scans/ranges", Ramp(3 * 180), 3, 180);
     file.SetAttribute("source", "simulator");

@@ -1,3 +1,5 @@
+#include "train/dataset_file.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "src/hdf5_io.h"
 #include "tests/src/test_util.h"
 #include "train/dataset.h"
-#include "train/dataset_file.h"
 #include "train/dataset_generation.h"
 
 namespace colav {

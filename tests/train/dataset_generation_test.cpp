@@ -1,10 +1,11 @@
+#include "train/dataset_generation.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
 #include <set>
 
 #include "train/dataset_augmentation.h"
-#include "train/dataset_generation.h"
 
 namespace colav {
 namespace {

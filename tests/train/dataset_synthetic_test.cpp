@@ -52,10 +52,10 @@ TEST(ShapeOverlapTest, KnownCases) {
 
   // Square-ish hull of width 10 at the origin, bow along +x to (15, 0).
   const ConvexPolygon hull = VesselHull(Eigen::Vector2d(0, 0), 10.0, 0.0);
-  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(0, 0), 1.0}, hull));      // centre inside
-  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(0, 7.0), 2.5}, hull));    // crosses top edge
+  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(0, 0), 1.0}, hull));    // centre inside
+  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(0, 7.0), 2.5}, hull));  // crosses top edge
   EXPECT_FALSE(CirclePolygonOverlap({Eigen::Vector2d(0, 7.0), 1.5}, hull));
-  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(17.0, 0), 2.5}, hull));   // at the bow
+  EXPECT_TRUE(CirclePolygonOverlap({Eigen::Vector2d(17.0, 0), 2.5}, hull));  // at the bow
   EXPECT_FALSE(CirclePolygonOverlap({Eigen::Vector2d(17.0, 0), 1.5}, hull));
   // Near the bow's slanted edge: the corner region is outside the hull.
   EXPECT_FALSE(CirclePolygonOverlap({Eigen::Vector2d(12.0, 5.0), 1.0}, hull));

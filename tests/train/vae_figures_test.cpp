@@ -1,10 +1,11 @@
+#include "train/vae_figures.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <set>
 
 #include "env/range_finder.h"
-#include "train/vae_figures.h"
 #include "train/vae_figures_kde.h"
 
 namespace colav {
@@ -25,12 +26,13 @@ TEST(VaeFiguresTest, KdeOfAStandardNormalIsANormalDensity) {
 
 TEST(VaeFiguresTest, RangesInvertTheClosenessTransforms) {
   const torch::Tensor ranges = torch::tensor({0.0, 12.5, 75.0, 150.0}, torch::kDouble);
-  for (const ClosenessTransform transform : {ClosenessTransform::kLinear, ClosenessTransform::kLog}) {
+  for (const ClosenessTransform transform :
+       {ClosenessTransform::kLinear, ClosenessTransform::kLog}) {
     std::vector<double> closeness;
     for (int i = 0; i < 4; ++i) closeness.push_back(Closeness(ranges[i].item<double>(), transform));
-    EXPECT_TRUE(torch::allclose(
-        RangesFromCloseness(torch::tensor(closeness, torch::kDouble), transform), ranges, 1e-9,
-        1e-9));
+    EXPECT_TRUE(
+        torch::allclose(RangesFromCloseness(torch::tensor(closeness, torch::kDouble), transform),
+                        ranges, 1e-9, 1e-9));
   }
 }
 

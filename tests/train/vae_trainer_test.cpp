@@ -1,3 +1,5 @@
+#include "train/vae_trainer.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +12,6 @@
 #include "tests/src/test_util.h"
 #include "train/dataset.h"
 #include "train/dataset_generation.h"
-#include "train/vae_trainer.h"
 #include "train/vae_trainer_checkpoint.h"
 #include "train/vae_trainer_seed.h"
 #include "train/vae_trainer_summary.h"
@@ -55,7 +56,8 @@ TEST(VaeTrainerTest, TinyRunWritesEveryOutputAndResumesFinishedSeeds) {
     results.push_back(RunVaeSeed(data, options, k, folder / ("run/seed_" + std::to_string(k))));
   }
   WriteRunSummary(folder / "run", options, results);
-  for (const std::string name : {"losses.csv", "encoder.pt", "vae.pt", "checkpoint.pt", "result.json"}) {
+  for (const std::string name :
+       {"losses.csv", "encoder.pt", "vae.pt", "checkpoint.pt", "result.json"}) {
     EXPECT_TRUE(std::filesystem::exists(folder / "run/seed_0" / name)) << name;
   }
   EXPECT_TRUE(std::filesystem::exists(folder / "run/summary.md"));

@@ -2,7 +2,6 @@
 // augments them with random circular shifts, splits them by source scan and writes one HDF5 file
 // (layout in train/dataset_file.h).
 #include <CLI/CLI.hpp>
-
 #include <array>
 #include <chrono>
 #include <cstdio>

@@ -1,11 +1,10 @@
 // train_vae: pre-trains ShallowConvVAE / DeepConvVAE on a generate_dataset file over one or more
 // seeds; writes per seed the losses, TorchScript encoder and VAE, a resumable checkpoint and the
 // test error, and across seeds the paper's table (summary.json, summary.md) and figures.
-#include <CLI/CLI.hpp>
-
 #include <spdlog/spdlog.h>
 #include <torch/torch.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -30,8 +29,8 @@ void DrawRunFigures(const VaeData& data, const VaeTrainingOptions& options,
   std::vector<std::vector<EpochLosses>> histories;
   for (const SeedResult& result : results) histories.push_back(result.history);
   DrawTrainingCurves(histories, options.beta,
-                     PaperModelName(options) + ", beta " + std::to_string(options.beta).substr(0, 4) +
-                         ": loss per scan",
+                     PaperModelName(options) + ", beta " +
+                         std::to_string(options.beta).substr(0, 4) + ": loss per scan",
                      run_dir / "training_curves.png");
   const ConvVae model = LoadSeedModel(options, 0, run_dir / "seed_0");
   const std::vector<std::int64_t> picked =
@@ -78,14 +77,15 @@ int TrainVae(int argc, char** argv) {
 
   const VaeData data = LoadVaeData(options.data_path, options.transform);
   spdlog::info("{}: train {}, validation {}, test {} scans; {}", options.data_path,
-               data.train.size(0), data.validation.size(0), data.test.size(0), DescribeVae(options));
+               data.train.size(0), data.validation.size(0), data.test.size(0),
+               DescribeVae(options));
   std::vector<SeedResult> results;
   for (std::int64_t k = 0; k < options.seeds; ++k) {
-    results.push_back(
-        RunVaeSeed(data, options, k, folder.path() / ("seed_" + std::to_string(k))));
+    results.push_back(RunVaeSeed(data, options, k, folder.path() / ("seed_" + std::to_string(k))));
     const SeedResult& r = results.back();
-    spdlog::info("seed {}: test error {:.3f} (BCE {:.3f} + beta KL {:.3f}), {} active dims, {:.1f} s",
-                 k, r.test_error, r.test_bce, r.test_kl, r.active_dimensions, r.seconds);
+    spdlog::info(
+        "seed {}: test error {:.3f} (BCE {:.3f} + beta KL {:.3f}), {} active dims, {:.1f} s", k,
+        r.test_error, r.test_bce, r.test_kl, r.active_dimensions, r.seconds);
   }
   WriteRunSummary(folder.path(), options, results);
   if (options.figures) DrawRunFigures(data, options, results, folder.path());
@@ -108,4 +108,6 @@ int TrainVae(int argc, char** argv) {
 }  // namespace
 }  // namespace colav
 
-int main(int argc, char** argv) { return colav::RunProgram("train_vae", argc, argv, colav::TrainVae); }
+int main(int argc, char** argv) {
+  return colav::RunProgram("train_vae", argc, argv, colav::TrainVae);
+}

@@ -1,12 +1,13 @@
 // vae_figures: the paper's multi-model VAE figures, each from small models trained here on a
 // generate_dataset file: the zero-padding versus CPTC-1D reconstruction comparison, and the kernel
 // density of the test set's 2-D latent for Shallow and Deep with beta in {0, 1, 5}.
-#include <CLI/CLI.hpp>
+#include "train/vae_figures.h"
 
 #include <ATen/CPUGeneratorImpl.h>
 #include <spdlog/spdlog.h>
 #include <torch/torch.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -14,7 +15,6 @@
 #include "src/cli.h"
 #include "src/seeding.h"
 #include "train/dataset.h"
-#include "train/vae_figures.h"
 #include "train/vae_figures_kde.h"
 #include "train/vae_trainer.h"
 #include "train/vae_trainer_config.h"
@@ -24,7 +24,8 @@ namespace {
 
 constexpr std::int64_t kComparisonScans = 4;
 
-ConvVae TrainLogged(const VaeTrainingOptions& options, const VaeData& data, const std::string& name) {
+ConvVae TrainLogged(const VaeTrainingOptions& options, const VaeData& data,
+                    const std::string& name) {
   const auto start = std::chrono::steady_clock::now();
   ConvVae model = TrainVaeInMemory(options, data, DeriveSeed(options.seed, "vae_figures." + name));
   spdlog::info("trained {} ({}) in {:.1f} s", name, DescribeVae(options),
@@ -66,9 +67,9 @@ void DrawLatentDensities(VaeTrainingOptions options, const VaeData& data,
           VaeArchitectureName(architecture) + "_beta" + std::to_string(static_cast<int>(beta));
       ConvVae model = TrainLogged(options, data, name);
       const torch::Tensor z = SampleTestLatents(model, data.test, DeriveSeed(options.seed, name));
-      const std::string title = std::string(architecture == VaeArchitecture::kShallow ? "Shallow"
-                                                                                      : "Deep") +
-                                ", β = " + std::to_string(static_cast<int>(beta));
+      const std::string title =
+          std::string(architecture == VaeArchitecture::kShallow ? "Shallow" : "Deep") +
+          ", β = " + std::to_string(static_cast<int>(beta));
       panels.push_back({title, GaussianKde2d(z)});
     }
   }
