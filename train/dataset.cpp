@@ -64,10 +64,13 @@ ClosenessTransform ParseClosenessTransform(const std::string& name, const std::s
   throw UserError(key + ": unknown transform '" + name + "' (expected linear or log)");
 }
 
-torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed) {
+torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed,
+                                bool clip) {
   if (variance <= 0.0) return x.clone();
   torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(seed);
-  return x + std::sqrt(variance) * torch::randn(x.sizes(), generator, x.options());
+  torch::Tensor noisy = x + std::sqrt(variance) * torch::randn(x.sizes(), generator, x.options());
+  if (clip) noisy.clamp_(0.0, 1.0);
+  return noisy;
 }
 
 }  // namespace colav

@@ -27,8 +27,11 @@ VaeData LoadVaeData(const std::filesystem::path& path, ClosenessTransform transf
 ClosenessTransform ParseClosenessTransform(const std::string& name, const std::string& key);
 
 /// x + N(0, variance) noise, drawn from a generator seeded with `seed` (the paper's sigma^2 =
-/// 0.007 on the training split: sd 0.084, about 12.5 m). Values are not clipped, as in the
-/// reference; BCE accepts targets slightly outside [0, 1].
-torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed);
+/// 0.007 on the training split: sd 0.084, about 12.5 m). The reference does not clip, and BCE
+/// accepts the targets outside [0, 1] that result; but BCE is then unbounded below (a target t < 0
+/// rewards p -> 0 with |t| * 100 per ray at PyTorch's log clamp), which a deep enough VAE learns to
+/// exploit from its own noisy input. `clip` keeps the noisy values in [0, 1].
+torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed,
+                                bool clip = false);
 
 }  // namespace colav

@@ -28,7 +28,7 @@ VaeTrainer::VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, s
       data_(data),
       seed_(seed),
       noisy_train_(WithTrainingNoise(data.train, options.train_noise_variance,
-                                     DeriveSeed(seed, "vae.noise"))),
+                                     DeriveSeed(seed, "vae.noise"), options.clip_noisy_scans)),
       shuffled_train_(torch::empty_like(noisy_train_)),
       model_(MakeVae(options.model, seed)),
       optimizer_(model_->parameters(), options.learning_rate) {}

@@ -14,6 +14,9 @@ ConfigSchema VaeTrainingSchema() {
                  {"linear", "log"})
       .AddDouble("data.train_noise_variance", 0.007,
                  "variance of the Gaussian noise added to the training split (paper: 0.007)", 0.0)
+      .AddBool("data.clip_noisy_scans", false,
+               "clip the noisy training scans to [0, 1] (the reference does not; unclipped, BCE is "
+               "unbounded below and DeepConvVAE exploits it)")
       .AddString("vae.model", "shallow", "ShallowConvVAE or DeepConvVAE", {"shallow", "deep"})
       .AddInt("vae.latent_dims", 12, "latent dimensions", 1, 4096)
       .AddDouble("vae.beta", 1.0, "weight of the KL term", 0.0)
@@ -38,6 +41,7 @@ VaeTrainingOptions VaeTrainingOptionsFrom(const Config& config) {
   if (options.data_path.empty()) throw UserError("data.path: no dataset given (use --data)");
   options.transform = ParseClosenessTransform(config.GetString("data.transform"), "data.transform");
   options.train_noise_variance = config.GetDouble("data.train_noise_variance");
+  options.clip_noisy_scans = config.GetBool("data.clip_noisy_scans");
   options.model.architecture = ParseVaeArchitecture(config.GetString("vae.model"));
   options.model.latent_dims = config.GetInt("vae.latent_dims");
   options.model.decoder_padding = config.GetString("vae.decoder_padding") == "zero"

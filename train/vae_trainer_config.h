@@ -15,6 +15,7 @@ struct VaeTrainingOptions {
   std::string data_path;
   ClosenessTransform transform = ClosenessTransform::kLinear;
   double train_noise_variance = 0.007;
+  bool clip_noisy_scans = false;  ///< see WithTrainingNoise; false = the reference
   VaeOptions model;
   double beta = 1.0;
   std::int64_t epochs = 25;

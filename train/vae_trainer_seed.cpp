@@ -48,9 +48,9 @@ std::string VaeRunSignature(const VaeTrainingOptions& options, std::int64_t inde
   std::ostringstream signature;
   signature << DescribeVae(options) << "; data " << options.data_path << " ("
             << (options.transform == ClosenessTransform::kLog ? "log" : "linear") << ", noise "
-            << options.train_noise_variance << "); batch " << options.batch_size << ", lr "
-            << options.learning_rate << ", epochs " << options.epochs << "; seed " << options.seed
-            << "/" << index;
+            << options.train_noise_variance << (options.clip_noisy_scans ? ", clipped" : "")
+            << "); batch " << options.batch_size << ", lr " << options.learning_rate << ", epochs "
+            << options.epochs << "; seed " << options.seed << "/" << index;
   return signature.str();
 }
 

@@ -118,6 +118,10 @@ TEST(DatasetLoadingTest, SplitsTransformAndNoise) {
   EXPECT_TRUE(torch::equal(noisy, WithTrainingNoise(big, 0.007, 11)));
   EXPECT_FALSE(torch::equal(noisy, WithTrainingNoise(big, 0.007, 12)));
   EXPECT_TRUE(torch::equal(WithTrainingNoise(big, 0.0, 11), big));
+  // Clipped: the unclipped draw pushed into [0, 1].
+  EXPECT_LT(noisy.min().item<double>(), 0.0);
+  const torch::Tensor clipped = WithTrainingNoise(big, 0.007, 11, /*clip=*/true);
+  EXPECT_TRUE(torch::equal(clipped, noisy.clamp(0.0, 1.0)));
 }
 
 }  // namespace

@@ -117,6 +117,9 @@ TEST(VaeTrainerTest, ResumedRunEqualsUninterruptedRun) {
   other.beta = 2.0;
   std::filesystem::remove(folder / "b/result.json");
   EXPECT_THROW(RunVaeSeed(data, other, 0, folder / "b"), UserError);
+  VaeTrainingOptions clipped = options;
+  clipped.clip_noisy_scans = true;
+  EXPECT_THROW(RunVaeSeed(data, clipped, 0, folder / "b"), UserError);
 }
 
 TEST(VaeTrainerTest, LossDecreasesOverEpochs) {

@@ -85,9 +85,13 @@ int Main(int argc, char** argv) {
   const colav::RunFolder run = colav::RunFolder::Create(run_path);
   colav::InitLogging("train_ppo", run.LogPath(), verbose);
   run.WriteResolvedConfig(config);
-  spdlog::info("{} {} (extractor {}, {}) in {}", resume.empty() ? "training" : "resuming",
-               config.GetInt("ppo.total_steps"), config.GetString("extractor.name"),
-               config.GetBool("extractor.locked") ? "locked" : "unlocked", run_path);
+  // The baseline has no pre-trained encoder to lock: it always trains.
+  const std::string extractor = config.GetString("extractor.name");
+  const std::string training_mode = extractor == "baseline"              ? "trained from scratch"
+                                    : config.GetBool("extractor.locked") ? "locked"
+                                                                         : "unlocked";
+  spdlog::info("{} {} steps (extractor {}, {}) in {}", resume.empty() ? "training" : "resuming",
+               config.GetInt("ppo.total_steps"), extractor, training_mode, run_path);
   try {
     const colav::PpoRunSummary summary = colav::TrainPpo(config, run.path(), !resume.empty());
     const colav::RollingEpisodeStats& r = summary.rolling;
