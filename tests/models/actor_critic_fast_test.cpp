@@ -6,7 +6,7 @@
 
 #include "env/environment_spec.h"
 #include "models/torchscript_export.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
@@ -47,7 +47,7 @@ class FastActorCriticTest : public ::testing::TestWithParam<std::tuple<Extractor
 
 TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   const auto [kind, locked] = GetParam();
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   ActorCritic model(Options(kind, directory.path(), locked));
   FastActorCritic fast(model, kBatch);
   EXPECT_EQ(fast.extractor_trainable(), kind == ExtractorKind::kBaseline || !locked);

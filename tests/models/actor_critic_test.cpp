@@ -6,7 +6,7 @@
 
 #include "env/environment_spec.h"
 #include "models/torchscript_export.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
@@ -79,7 +79,7 @@ TEST(ActorCriticTest, InitialisationIsAFunctionOfTheSeed) {
 }
 
 TEST(ActorCriticTest, PretrainedEncoderKeepsItsWeights) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   torch::manual_seed(3);
   VaeEncoder encoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12});
   ExportEncoder(encoder, directory.path() / "encoder.pt");

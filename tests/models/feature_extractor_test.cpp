@@ -7,20 +7,12 @@
 #include "env/environment_spec.h"
 #include "models/torchscript_export.h"
 #include "src/error.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
 
-template <typename Action>
-std::string UserErrorMessage(Action action) {
-  try {
-    action();
-  } catch (const UserError& error) {
-    return error.what();
-  }
-  return "<no UserError>";
-}
+using testing_util::UserErrorMessage;
 
 std::filesystem::path ExportedEncoder(const std::filesystem::path& folder,
                                       VaeArchitecture architecture, std::int64_t latent) {
@@ -65,7 +57,7 @@ TEST(FeatureExtractorTest, MissingEncoderFileIsAUserErrorNamingIt) {
 }
 
 TEST(FeatureExtractorTest, EncoderOfTheWrongLatentSizeIsAUserErrorNamingTheFile) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   FeatureExtractorOptions options;
   options.kind = ExtractorKind::kVaeShallow;
   options.encoder = ExportedEncoder(directory.path(), VaeArchitecture::kShallow, 8);
@@ -78,7 +70,7 @@ TEST(FeatureExtractorTest, EncoderOfTheWrongLatentSizeIsAUserErrorNamingTheFile)
 }
 
 TEST(FeatureExtractorTest, EncoderOfTheWrongArchitectureIsAUserError) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   FeatureExtractorOptions options;
   options.kind = ExtractorKind::kVaeShallow;
   options.encoder = ExportedEncoder(directory.path(), VaeArchitecture::kDeep, 12);
@@ -87,7 +79,7 @@ TEST(FeatureExtractorTest, EncoderOfTheWrongArchitectureIsAUserError) {
 }
 
 TEST(FeatureExtractorTest, LockedEncoderDoesNotTrain) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   FeatureExtractorOptions options;
   options.kind = ExtractorKind::kVaeShallow;
   options.encoder = ExportedEncoder(directory.path(), VaeArchitecture::kShallow, 12);

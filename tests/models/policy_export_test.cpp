@@ -4,7 +4,7 @@
 
 #include "env/environment_spec.h"
 #include "models/torchscript_export.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
@@ -28,7 +28,7 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
 }
 
 TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   ActorCriticOptions options;
   options.log_std_init = -0.5;
   ActorCritic model(options);
@@ -39,7 +39,7 @@ TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
 }
 
 TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   ActorCriticOptions options;
   options.extractor.kind = ExtractorKind::kVaeDeep;
   options.extractor.encoder = directory.path() / "encoder.pt";

@@ -15,13 +15,13 @@
 
 #include "models/conv_vae.h"
 #include "src/error.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
 
 using ::testing::HasSubstr;
-using testing::TemporaryDirectory;
+using testing_util::TemporaryFolder;
 
 // A batch of scans with structure at both ends of the ring.
 torch::Tensor Scans() {
@@ -34,17 +34,7 @@ float MaxAbsDifference(const torch::Tensor& a, const torch::Tensor& b) {
   return (a - b).abs().max().item<float>();
 }
 
-// The message of the UserError `call` throws ("" and a test failure if it throws none).
-template <typename Call>
-std::string UserErrorMessage(Call call) {
-  try {
-    call();
-  } catch (const UserError& error) {
-    return error.what();
-  }
-  ADD_FAILURE() << "expected a UserError";
-  return "";
-}
+using testing_util::UserErrorMessage;
 
 struct Configuration {
   VaeArchitecture architecture;
@@ -59,7 +49,7 @@ const std::vector<Configuration> kConfigurations = {
     {VaeArchitecture::kDeep, 2, DecoderPadding::kZero}};
 
 TEST(ExportEncoder, LoadedModuleGivesTheSameMuAndCarriesItsAttributes) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const torch::Tensor x = Scans();
   for (const Configuration& configuration : kConfigurations) {
     VaeEncoder encoder(VaeEncoderOptions{configuration.architecture, configuration.latent_dims});
@@ -82,7 +72,7 @@ TEST(ExportEncoder, LoadedModuleGivesTheSameMuAndCarriesItsAttributes) {
 // With logvar pinned far below zero the sampling noise vanishes, so the scripted forward must
 // reproduce the C++ reconstruction.
 TEST(ExportVae, LoadedModuleReproducesReconstructionMuAndLogvar) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const torch::Tensor x = Scans();
   for (const Configuration& configuration : kConfigurations) {
     ConvVae vae(
@@ -114,7 +104,7 @@ TEST(ExportVae, LoadedModuleReproducesReconstructionMuAndLogvar) {
 }
 
 TEST(ExportVae, ScriptedForwardSamplesTheLatent) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   ConvVae vae(VaeOptions{});
   ExportVae(vae, directory.path() / "vae.pt");
   torch::jit::Module loaded = torch::jit::load((directory.path() / "vae.pt").string());
@@ -125,7 +115,7 @@ TEST(ExportVae, ScriptedForwardSamplesTheLatent) {
 }
 
 TEST(ExportEncoder, UnwritablePathIsAUserError) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const std::filesystem::path not_a_folder = directory.path() / "file";
   std::ofstream(not_a_folder) << "a file, not a folder\n";
   VaeEncoder encoder(VaeEncoderOptions{});
@@ -134,7 +124,7 @@ TEST(ExportEncoder, UnwritablePathIsAUserError) {
 }
 
 TEST(LoadVaeEncoder, RebuildsTheExportedEncoder) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const torch::Tensor x = Scans();
   for (const Configuration& configuration : kConfigurations) {
     VaeEncoder encoder(VaeEncoderOptions{configuration.architecture, configuration.latent_dims});
@@ -153,14 +143,14 @@ TEST(LoadVaeEncoder, RebuildsTheExportedEncoder) {
 }
 
 TEST(LoadVaeEncoder, MissingFileIsAUserErrorNamingIt) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "absent.pt";
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(path); }),
               HasSubstr("'" + path.string() + "' does not exist"));
 }
 
 TEST(LoadVaeEncoder, GarbageFileIsAUserErrorNamingIt) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "garbage.pt";
   std::ofstream(path) << "this is not a zip archive\n";
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(path); }),
@@ -169,7 +159,7 @@ TEST(LoadVaeEncoder, GarbageFileIsAUserErrorNamingIt) {
 
 // A file whose latent_dims attribute disagrees with its parameters.
 TEST(LoadVaeEncoder, LatentMismatchIsAUserErrorNamingTheParameter) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "encoder.pt";
   torch::jit::Module script = ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}));
   script.setattr("latent_dims", 5);
@@ -182,7 +172,7 @@ TEST(LoadVaeEncoder, LatentMismatchIsAUserErrorNamingTheParameter) {
 
 // A shallow encoder's parameters do not fit the deep architecture its attribute claims.
 TEST(LoadVaeEncoder, ArchitectureMismatchIsAUserErrorNamingTheParameter) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "encoder.pt";
   torch::jit::Module script = ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}));
   script.setattr("architecture", std::string("deep"));
@@ -194,7 +184,7 @@ TEST(LoadVaeEncoder, ArchitectureMismatchIsAUserErrorNamingTheParameter) {
 // A TorchScript file that is not an encoder export (here a vae.pt) has no usable attributes or
 // parameters.
 TEST(LoadVaeEncoder, OtherTorchScriptFilesAreUserErrors) {
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   torch::jit::Module bare("__torch__.Bare");
   bare.define("def forward(self, x: Tensor) -> Tensor:\n    return x\n");
   bare.save((directory.path() / "bare.pt").string());
@@ -220,7 +210,7 @@ std::pair<int, std::string> RunShell(const std::string& command) {
 // them. python3-torch is a declared test dependency, so its absence fails the test.
 TEST(ExportedFiles, LoadInPythonTorch) {
   constexpr char kPython[] = "/usr/bin/python3";
-  TemporaryDirectory directory;
+  TemporaryFolder directory;
   torch::manual_seed(13);
   ConvVae vae(VaeOptions{VaeArchitecture::kDeep, 12, DecoderPadding::kCircular});
   ExportEncoder(vae->encoder(), directory.path() / "encoder.pt");

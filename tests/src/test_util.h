@@ -19,9 +19,12 @@ class TemporaryFolder {
  public:
   TemporaryFolder() {
     const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = std::filesystem::path(::testing::TempDir()) /
-            ("colav-" + std::string(test->test_suite_name()) + "-" + test->name() + "-" +
-             std::to_string(getpid()));
+    std::string name = "colav-" + std::string(test->test_suite_name()) + "-" + test->name() + "-" +
+                       std::to_string(getpid());
+    for (char& c : name) {
+      if (c == '/') c = '_';  // parameterised test names contain slashes
+    }
+    path_ = std::filesystem::path(::testing::TempDir()) / name;
     std::filesystem::remove_all(path_);
     std::filesystem::create_directories(path_);
   }

@@ -5,7 +5,7 @@
 #include <fstream>
 
 #include "src/error.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 #include "train/ppo.h"
 #include "train/ppo_config.h"
 #include "train/ppo_update.h"
@@ -14,7 +14,7 @@ namespace colav {
 namespace {
 
 TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   PpoOptions options;
   options.n_envs = 2;
   options.n_steps = 8;
@@ -60,7 +60,7 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
 }
 
 TEST(PpoCheckpointTest, MissingStateIsAUserError) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   ActorCritic model(ActorCriticOptions{});
   PolicyOptimizer optimizer(model->TrainableParameters(), AdamOptions{});
   auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
@@ -92,7 +92,7 @@ std::size_t CountLines(const std::filesystem::path& path) {
 }
 
 TEST(PpoCheckpointTest, ResumedRunContinuesFromTheCheckpointStep) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   const PpoRunSummary first = TrainPpo(TinyRun(64), directory.path(), /*resume=*/false);
   EXPECT_TRUE(first.finished);
   EXPECT_EQ(first.counters.global_step, 64);

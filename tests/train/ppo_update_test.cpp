@@ -6,7 +6,7 @@
 #include <limits>
 
 #include "models/torchscript_export.h"
-#include "tests/models/temporary_directory.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
@@ -51,7 +51,7 @@ std::vector<torch::Tensor> Clones(const std::vector<torch::Tensor>& tensors) {
 }
 
 TEST(PpoUpdaterTest, LockedEncoderStaysBitIdenticalWhileAnUnlockedOneChanges) {
-  testing::TemporaryDirectory directory;
+  testing_util::TemporaryFolder directory;
   torch::manual_seed(9);
   const std::filesystem::path encoder = directory.path() / "encoder.pt";
   ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kShallow, 12}), encoder);
