@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "env/environment.h"
-#include "env/thread_pool.h"
+#include "src/threads/thread_pool.h"
 #include "env/training_scenario.h"
 #include "src/seeding.h"
 

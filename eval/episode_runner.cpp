@@ -5,7 +5,7 @@
 
 #include "env/environment.h"
 #include "env/scenario_file.h"
-#include "env/thread_pool.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 namespace {

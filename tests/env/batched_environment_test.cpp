@@ -3,7 +3,6 @@
 
 #include <gtest/gtest.h>
 
-#include "env/thread_pool.h"
 
 namespace colav {
 namespace {
@@ -67,18 +66,6 @@ TEST(BatchedEnvironment, AutoResetHandsBackFinalObservation) {
               std::vector<float>(first.begin() + i * kObservationSize,
                                  first.begin() + (i + 1) * kObservationSize));
   }
-}
-
-TEST(ThreadPool, CoversEveryIndexOnceAndPropagatesErrors) {
-  ThreadPool pool(3);
-  std::vector<int> hits(100, 0);
-  for (int round = 0; round < 50; ++round) pool.ParallelFor(100, [&](int i) { ++hits[i]; });
-  for (const int h : hits) EXPECT_EQ(h, 50);
-  EXPECT_THROW(pool.ParallelFor(10,
-                                [](int i) {
-                                  if (i == 7) throw std::runtime_error("x");
-                                }),
-               std::runtime_error);
 }
 
 }  // namespace

@@ -1,0 +1,40 @@
+// From source scans to the stored dataset (paper, "Data generation and augmentation"; spec
+// README): each scan plus random circular shifts of it (rotations about the vessel's z-axis),
+// split train:test by source scan, so no rotation of a test scan is ever trained on, and a part of
+// the training scans held out for validation.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "src/seeding.h"
+#include "train/dataset/file.h"
+#include "train/dataset/scan_group.h"
+#include "train/dataset/recording.h"
+
+namespace colav {
+
+struct AugmentationOptions {
+  int shifts_per_scan = 2;           ///< random shifts added to each scan (N -> (1 + shifts) N)
+  double test_fraction = 0.3;        ///< of the source scans
+  double validation_fraction = 0.2;  ///< of the non-test source scans
+};
+
+/// Split of each of `count` source scans: a seeded shuffle, the first round(test_fraction * count)
+/// to test, then round(validation_fraction * rest) to validation, the others to train.
+std::vector<DatasetSplit> SplitSourceScans(std::int64_t count, const AugmentationOptions& options,
+                                           Rng& rng);
+
+/// `count` distinct shifts in 1..179 (a shift of 0 would duplicate the original).
+std::vector<std::int64_t> DrawShifts(int count, Rng& rng);
+
+/// row[i] = scan[(i - shift) mod 180], numpy.roll's convention.
+RangeScan RollScan(const RangeScan& scan, std::int64_t shift);
+
+/// The dataset rows: for each source scan in order, the original then its shifts. Rows of one
+/// source scan share its split. Shifts and split are drawn from streams of `seed`.
+ScanDataset AugmentAndSplit(const std::vector<RangeScan>& scans,
+                            const std::vector<ScanGroup>& groups,
+                            const AugmentationOptions& options, std::uint64_t seed);
+
+}  // namespace colav

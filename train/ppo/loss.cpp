@@ -1,0 +1,113 @@
+#include "train/ppo/loss.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "env/environment_spec.h"
+
+namespace colav {
+namespace {
+
+// SB3's guard against a zero advantage spread.
+constexpr double kAdvantageEpsilon = 1e-8;
+const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
+
+}  // namespace
+
+PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::Tensor& values,
+                      const torch::Tensor& actions, const torch::Tensor& old_log_probs,
+                      const torch::Tensor& advantages, const torch::Tensor& returns,
+                      const PpoLossOptions& options) {
+  torch::Tensor normalized = advantages;
+  if (options.normalize_advantage && advantages.numel() > 1) {
+    normalized = (advantages - advantages.mean()) / (advantages.std() + kAdvantageEpsilon);
+  }
+  const torch::Tensor log_ratio = distribution.LogProb(actions) - old_log_probs;
+  const torch::Tensor ratio = torch::exp(log_ratio);
+  const torch::Tensor clipped_ratio =
+      torch::clamp(ratio, 1.0 - options.clip_range, 1.0 + options.clip_range);
+  const torch::Tensor policy_loss =
+      -torch::min(normalized * ratio, normalized * clipped_ratio).mean();
+  const torch::Tensor value_loss = torch::mse_loss(returns, values.flatten());
+  const torch::Tensor entropy_loss = -distribution.Entropy().mean();
+  PpoLossResult result;
+  result.loss = policy_loss + options.ent_coef * entropy_loss + options.vf_coef * value_loss;
+  torch::NoGradGuard no_grad;
+  result.stats.loss = result.loss.item<double>();
+  result.stats.policy_gradient_loss = policy_loss.item<double>();
+  result.stats.value_loss = value_loss.item<double>();
+  result.stats.entropy_loss = entropy_loss.item<double>();
+  result.stats.approx_kl = ((ratio - 1) - log_ratio).mean().item<double>();
+  result.stats.clip_fraction =
+      ((ratio - 1).abs() > options.clip_range).to(torch::kFloat64).mean().item<double>();
+  return result;
+}
+
+PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const float* value,
+                              const PpoMinibatch& batch, const PpoLossOptions& options,
+                              float* d_mean, float* d_log_std, float* d_value) {
+  const int B = batch.size;
+  double advantage_mean = 0.0;
+  double advantage_scale = 1.0;
+  if (options.normalize_advantage && B > 1) {
+    for (int b = 0; b < B; ++b) advantage_mean += batch.advantages[b];
+    advantage_mean /= B;
+    double variance = 0.0;
+    for (int b = 0; b < B; ++b) variance += std::pow(batch.advantages[b] - advantage_mean, 2);
+    advantage_scale = 1.0 / (std::sqrt(variance / (B - 1)) + kAdvantageEpsilon);
+  }
+
+  double inverse_std[kActionSize];
+  double log_std_sum = 0.0;
+  for (int j = 0; j < kActionSize; ++j) {
+    inverse_std[j] = std::exp(-static_cast<double>(log_std[j]));
+    log_std_sum += log_std[j];
+    d_log_std[j] = 0.0f;
+  }
+  const double entropy = kActionSize * (0.5 + kLogSqrtTwoPi) + log_std_sum;
+
+  PpoLossStats stats;
+  const double low = 1.0 - options.clip_range;
+  const double high = 1.0 + options.clip_range;
+  double d_log_std_sum[kActionSize] = {};
+  for (int b = 0; b < B; ++b) {
+    double z[kActionSize];
+    double log_prob = -log_std_sum - kActionSize * kLogSqrtTwoPi;
+    for (int j = 0; j < kActionSize; ++j) {
+      z[j] = (batch.actions[b * kActionSize + j] - mean[j * B + b]) * inverse_std[j];
+      log_prob -= 0.5 * z[j] * z[j];
+    }
+    const double log_ratio = log_prob - batch.old_log_probs[b];
+    const double ratio = std::exp(log_ratio);
+    const double advantage = (batch.advantages[b] - advantage_mean) * advantage_scale;
+    const double clipped = std::clamp(ratio, low, high);
+    stats.policy_gradient_loss -= std::min(ratio * advantage, clipped * advantage);
+    stats.approx_kl += (ratio - 1.0) - log_ratio;
+    stats.clip_fraction += std::abs(ratio - 1.0) > options.clip_range ? 1.0 : 0.0;
+    // The min passes the gradient of r A' unless the clipped branch is smaller and flat.
+    const bool unclipped_active =
+        (ratio >= low && ratio <= high) || ratio * advantage < clipped * advantage;
+    const double d_log_prob = unclipped_active ? -advantage * ratio / B : 0.0;
+    for (int j = 0; j < kActionSize; ++j) {
+      d_mean[j * B + b] = static_cast<float>(d_log_prob * z[j] * inverse_std[j]);
+      d_log_std_sum[j] += d_log_prob * (z[j] * z[j] - 1.0);
+    }
+    const double error = value[b] - batch.returns[b];
+    stats.value_loss += error * error;
+    d_value[b] = static_cast<float>(options.vf_coef * 2.0 * error / B);
+  }
+  for (int j = 0; j < kActionSize; ++j) {
+    d_log_std[j] = static_cast<float>(d_log_std_sum[j] - options.ent_coef);
+  }
+  stats.policy_gradient_loss /= B;
+  stats.value_loss /= B;
+  stats.approx_kl /= B;
+  stats.clip_fraction /= B;
+  stats.entropy_loss = -entropy;
+  stats.loss = stats.policy_gradient_loss + options.ent_coef * stats.entropy_loss +
+               options.vf_coef * stats.value_loss;
+  return stats;
+}
+
+}  // namespace colav

@@ -1,0 +1,115 @@
+// train_ppo: trains the PPO collision-avoidance agent with a chosen feature extractor (spec
+// interfaces.md). Outputs in RUN_DIR: policy.pt, training_state.pt, checkpoints/, episodes.csv,
+// updates.csv, summary.json, config.yaml, train_ppo.log; ends with the headline lines
+// `steps_per_s: N` and `wall_s: N`.
+#include <spdlog/spdlog.h>
+
+#include <CLI/CLI.hpp>
+#include <cstring>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "models/actor_critic.h"
+#include "src/cli.h"
+#include "src/error.h"
+#include "src/logging.h"
+#include "src/run_folder.h"
+#include "train/ppo/trainer.h"
+#include "train/ppo/config.h"
+#include "train/ppo/update.h"
+
+namespace {
+
+// Exit status of a run stopped by a NaN or Inf.
+constexpr int kDivergedStatus = 3;
+
+colav::ConfigSchema TrainPpoSchema() {
+  colav::ConfigSchema schema;
+  colav::AddPpoKeys(schema);
+  return schema;
+}
+
+// A resumed run reads its configuration from RUN_DIR/config.yaml unless --config says otherwise:
+// inserts "--config RUN_DIR/config.yaml" after the program name.
+std::vector<std::string> WithRunConfig(int argc, char** argv) {
+  std::vector<std::string> args(argv, argv + argc);
+  std::string resume_dir;
+  bool has_config = false;
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--config" || args[i].rfind("--config=", 0) == 0) has_config = true;
+    if (args[i] == "--resume" && i + 1 < args.size()) resume_dir = args[i + 1];
+    if (args[i].rfind("--resume=", 0) == 0) resume_dir = args[i].substr(std::strlen("--resume="));
+  }
+  if (!resume_dir.empty() && !has_config) {
+    args.insert(args.begin() + 1, {"--config", resume_dir + "/config.yaml"});
+  }
+  return args;
+}
+
+int Main(int argc, char** argv) {
+  CLI::App app{"Trains the PPO collision-avoidance agent (Stable-Baselines3 semantics)."};
+  colav::ConfigFlags config_flags(app, TrainPpoSchema());
+  config_flags.AddFlag("--extractor", "extractor.name");
+  config_flags.AddFlag("--encoder", "extractor.encoder");
+  config_flags.AddSwitch("--locked", "extractor.locked", true, "freeze the pre-trained encoder");
+  config_flags.AddSwitch("--unlocked", "extractor.locked", false, "fine-tune the encoder");
+  config_flags.AddFlag("--steps", "ppo.total_steps");
+  config_flags.AddFlag("--envs", "ppo.n_envs");
+  config_flags.AddFlag("--seed", "train.seed");
+  std::string out;
+  std::string resume;
+  bool verbose = false;
+  app.add_option("--out", out, "run folder (created)")->type_name("RUN_DIR");
+  app.add_option("--resume", resume, "continue the run in RUN_DIR from its last checkpoint")
+      ->type_name("RUN_DIR");
+  app.add_flag("-v,--verbose", verbose, "debug logging");
+
+  std::vector<std::string> args = WithRunConfig(argc, argv);
+  std::vector<char*> arg_pointers;
+  for (std::string& arg : args) arg_pointers.push_back(arg.data());
+  colav::ParseCommandLine(app, static_cast<int>(arg_pointers.size()), arg_pointers.data());
+  if (out.empty() && resume.empty()) throw colav::UserError("--out RUN_DIR is required");
+  if (!out.empty() && !resume.empty() && out != resume) {
+    throw colav::UserError("--out " + out + " and --resume " + resume + " name different runs");
+  }
+  const std::string run_path = resume.empty() ? out : resume;
+  if (!resume.empty() &&
+      !std::filesystem::is_regular_file(std::filesystem::path(resume) / "training_state.pt")) {
+    throw colav::UserError("--resume " + resume + ": no training_state.pt in that folder");
+  }
+  const colav::Config config = config_flags.Resolve();
+  // A bad extractor setting or encoder file fails here, before the run folder is touched.
+  if (resume.empty()) colav::ActorCritic(colav::ActorCriticOptionsFrom(config));
+
+  const colav::RunFolder run = colav::RunFolder::Create(run_path);
+  colav::InitLogging("train_ppo", run.LogPath(), verbose);
+  run.WriteResolvedConfig(config);
+  // The baseline has no pre-trained encoder to lock: it always trains.
+  const std::string extractor = config.GetString("extractor.name");
+  const std::string training_mode = extractor == "baseline"              ? "trained from scratch"
+                                    : config.GetBool("extractor.locked") ? "locked"
+                                                                         : "unlocked";
+  spdlog::info("{} {} steps (extractor {}, {}) in {}", resume.empty() ? "training" : "resuming",
+               config.GetInt("ppo.total_steps"), extractor, training_mode, run_path);
+  try {
+    const colav::PpoRunSummary summary = colav::TrainPpo(config, run.path(), !resume.empty());
+    const colav::RollingEpisodeStats& r = summary.rolling;
+    spdlog::info(
+        "{} at step {}: last {} episodes progress {:.1f}%, cte {:.1f} m, {:.0f} steps, "
+        "collisions {:.1f}%",
+        summary.finished ? "finished" : "stopped", summary.counters.global_step, r.count,
+        100 * r.progress, r.mean_cte, r.steps, 100 * r.collision_rate);
+    std::cout << "steps_per_s: " << summary.steps_per_s << "\n"
+              << "wall_s: " << summary.wall_s << std::endl;
+  } catch (const colav::TrainingDiverged& diverged) {
+    spdlog::error("training diverged: {}; the last good checkpoint is kept in {}", diverged.what(),
+                  run_path);
+    return kDivergedStatus;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) { return colav::RunProgram("train_ppo", argc, argv, Main); }

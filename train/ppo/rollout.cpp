@@ -1,0 +1,95 @@
+#include "train/ppo/rollout.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#include "src/seeding.h"
+
+namespace colav {
+namespace {
+
+const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
+
+// The seed BatchedEnvironment plays episode `count` of world `env` from (its private EpisodeSeed).
+std::uint64_t EpisodeSeedOf(std::uint64_t env_seed, int env, std::uint64_t count) {
+  return DeriveSeed(env_seed, "episode", (static_cast<std::uint64_t>(env) << 32U) + count);
+}
+
+}  // namespace
+
+RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
+                                   std::uint64_t env_seed)
+    : env_seed_(env_seed),
+      env_(config, n_envs, threads, env_seed),
+      episode_counts_(n_envs, 0),
+      mean_(static_cast<std::size_t>(n_envs) * kActionSize),
+      clipped_actions_(mean_.size()),
+      scratch_values_(n_envs),
+      scratch_means_(kActionSize) {
+  env_.Reset();
+}
+
+bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noise,
+                               RolloutBuffer& buffer, const StepCallback& after_step) {
+  const int N = env_.num_envs();
+  const float* log_std = policy.log_std();
+  float std[kActionSize];
+  double log_prob_constant = -kActionSize * kLogSqrtTwoPi;
+  for (int j = 0; j < kActionSize; ++j) {
+    std[j] = std::exp(log_std[j]);
+    log_prob_constant -= log_std[j];
+  }
+  const float* epsilon = noise.data_ptr<float>();
+  for (int t = 0; t < buffer.num_steps(); ++t) {
+    float* observations = buffer.observations(t);
+    std::copy_n(env_.observations(), N * kObservationSize, observations);
+    policy.Predict(observations, N, mean_.data(), buffer.values(t));
+    float* actions = buffer.actions(t);
+    for (int e = 0; e < N; ++e) {
+      // log N(a; mean, std) with a = mean + std * eps only depends on eps.
+      double log_prob = log_prob_constant;
+      for (int j = 0; j < kActionSize; ++j) {
+        const int k = e * kActionSize + j;
+        const float eps = epsilon[(t * N) * kActionSize + k];
+        actions[k] = mean_[k] + std[j] * eps;
+        clipped_actions_[k] = std::clamp(actions[k], -1.0f, 1.0f);
+        log_prob -= 0.5 * static_cast<double>(eps) * eps;
+      }
+      buffer.log_probs(t)[e] = static_cast<float>(log_prob);
+    }
+    const auto step_start = std::chrono::steady_clock::now();
+    env_.Step(clipped_actions_.data());
+    env_seconds_ +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+
+    finished_.clear();
+    for (int e = 0; e < N; ++e) {
+      buffer.rewards(t)[e] = env_.rewards()[e];
+      buffer.dones(t)[e] = env_.terminated()[e] || env_.truncated()[e];
+      buffer.truncated(t)[e] = env_.truncated()[e];
+      if (const auto& episode = env_.finished_episodes()[e]) {
+        finished_.push_back({e, EpisodeSeedOf(env_seed_, e, episode_counts_[e]++), *episode});
+      }
+    }
+    ValueFinalObservations(policy, t, buffer);
+    if (!after_step(finished_)) return false;
+  }
+  policy.Predict(env_.observations(), N, mean_.data(), buffer.last_values());
+  return true;
+}
+
+void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
+                                              RolloutBuffer& buffer) {
+  const int N = env_.num_envs();
+  for (int e = 0; e < N; ++e) {
+    buffer.final_values(t)[e] = 0.0f;
+    if (!env_.truncated()[e]) continue;
+    // Rare (one step in 2000 per world): value the one row on its own.
+    policy.Predict(env_.final_observations() + static_cast<std::ptrdiff_t>(e) * kObservationSize, 1,
+                   scratch_means_.data(), scratch_values_.data());
+    buffer.final_values(t)[e] = scratch_values_[0];
+  }
+}
+
+}  // namespace colav

@@ -1,0 +1,58 @@
+// Collects PPO rollouts from the batched environment (SB3 collect_rollouts, reference-learning
+// 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] for the environment
+// only (the buffer keeps the unclipped sample and its log-probability), and a truncated episode's
+// final observation is valued for bootstrapping.
+#pragma once
+
+#include <torch/torch.h>
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "env/batched_environment.h"
+#include "models/actor_critic_fast.h"
+#include "train/ppo/rollout_buffer.h"
+
+namespace colav {
+
+/// A finished episode, as logged.
+struct FinishedEpisode {
+  int env = 0;
+  std::uint64_t seed = 0;  ///< the scenario's seed
+  EpisodeMetrics metrics;
+};
+
+class RolloutCollector {
+ public:
+  /// n_envs worlds; env_seed determines every scenario they will play.
+  RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
+                   std::uint64_t env_seed);
+
+  /// Called after every environment step with the episodes that just ended; returning false stops
+  /// the rollout early.
+  using StepCallback = std::function<bool(const std::vector<FinishedEpisode>& finished)>;
+
+  /// Fills `buffer` step by step with noise [n_steps, n_envs, 2] of N(0, 1) values (the sampling
+  /// noise, drawn by the caller from its generator). Returns false if `after_step` stopped it, in
+  /// which case the buffer is incomplete.
+  bool Collect(FastActorCritic& policy, const torch::Tensor& noise, RolloutBuffer& buffer,
+               const StepCallback& after_step);
+
+  /// Wall time spent stepping the worlds so far (s).
+  double env_seconds() const { return env_seconds_; }
+
+ private:
+  void ValueFinalObservations(FastActorCritic& policy, int t, RolloutBuffer& buffer);
+
+  std::uint64_t env_seed_;
+  BatchedEnvironment env_;
+  std::vector<std::uint64_t> episode_counts_;
+  std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
+  std::vector<FinishedEpisode> finished_;
+  double env_seconds_ = 0.0;
+};
+
+}  // namespace colav

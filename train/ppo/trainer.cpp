@@ -1,0 +1,193 @@
+#include "train/ppo/trainer.h"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <cstdio>
+#include <thread>
+
+#include "env/environment_config.h"
+#include "src/atomic_file.h"
+#include "src/cli.h"
+#include "src/progress.h"
+#include "src/seeding.h"
+#include "train/ppo/config.h"
+#include "train/ppo/rollout.h"
+#include "train/ppo/update.h"
+
+namespace colav {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double SecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::string Fixed(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, value);
+  return text;
+}
+
+ProgressMetrics ProgressMetricsOf(const RollingEpisodeStats& rolling) {
+  if (rolling.count == 0) return {};
+  return {{"reward", Fixed(rolling.reward, 0)},
+          {"progress", Fixed(100.0 * rolling.progress, 1) + "%"},
+          {"collisions", Fixed(100.0 * rolling.collision_rate, 0) + "%"}};
+}
+
+nlohmann::json SummaryJson(const Config& config, const PpoRunSummary& summary) {
+  const RollingEpisodeStats& r = summary.rolling;
+  return {{"global_step", summary.counters.global_step},
+          {"n_updates", summary.counters.n_updates},
+          {"rollouts", summary.counters.rollouts},
+          {"episodes", summary.counters.episodes},
+          {"finished", summary.finished},
+          {"steps_per_s", summary.steps_per_s},
+          {"wall_s", summary.wall_s},
+          {"total_wall_s", summary.counters.wall_s},
+          {"session_steps", summary.session_steps},
+          {"time_s",
+           {{"rollout", summary.rollout_s},
+            {"env_step", summary.env_s},
+            {"update", summary.update_s},
+            {"checkpoint", summary.checkpoint_s}}},
+          {"last_100_episodes",
+           {{"count", r.count},
+            {"reward", r.reward},
+            {"progress", r.progress},
+            {"mean_cte", r.mean_cte},
+            {"steps", r.steps},
+            {"collision_rate", r.collision_rate},
+            {"goal_rate", r.goal_rate}}},
+          {"config", config.ToJson()}};
+}
+
+class PpoTrainer {
+ public:
+  PpoTrainer(const Config& config, std::filesystem::path run_dir, bool resume)
+      : config_(config),
+        run_dir_(std::move(run_dir)),
+        options_(PpoOptionsFrom(config)),
+        model_(ModelOptions(config, resume)),
+        updater_(model_, options_),
+        generator_(at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(options_.seed, "ppo"))),
+        counters_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_)
+                         : TrainingCounters{}),
+        collector_(EnvironmentConfigFrom(config), options_.n_envs, Threads(options_.env_threads),
+                   // A resumed session plays new scenarios, reproducibly.
+                   DeriveSeed(options_.seed, "worlds", counters_.global_step)),
+        logs_(run_dir_, resume ? std::optional<std::int64_t>(counters_.global_step) : std::nullopt),
+        buffer_(options_.n_steps, options_.n_envs) {
+    updater_.set_n_updates(counters_.n_updates);
+  }
+
+  PpoRunSummary Run() {
+    const Clock::time_point start = Clock::now();
+    const std::int64_t first_step = counters_.global_step;
+    const double previous_wall_s = counters_.wall_s;
+    ProgressOptions progress_options;
+    progress_options.initial_done = first_step;
+    ProgressBar progress("train_ppo", options_.total_steps, "steps", progress_options);
+    std::int64_t next_checkpoint =
+        (counters_.global_step / options_.checkpoint_interval + 1) * options_.checkpoint_interval;
+    const auto checkpoint = [&] {
+      const Clock::time_point checkpoint_start = Clock::now();
+      counters_.wall_s = previous_wall_s + SecondsSince(start);
+      logs_.Flush();
+      SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_,
+                     options_.keep_checkpoints);
+      summary_.checkpoint_s += SecondsSince(checkpoint_start);
+    };
+    const StopFlag stop_flag;
+    bool stopped = false;
+    while (counters_.global_step < options_.total_steps && !stopped) {
+      const Clock::time_point rollout_start = Clock::now();
+      const torch::Tensor noise =
+          torch::randn({options_.n_steps, options_.n_envs, kActionSize}, generator_);
+      const bool complete = collector_.Collect(
+          updater_.policy(), noise, buffer_, [&](const std::vector<FinishedEpisode>& finished) {
+            counters_.global_step += options_.n_envs;
+            for (const FinishedEpisode& episode : finished) {
+              logs_.AddEpisode(counters_.global_step, episode);
+              ++counters_.episodes;
+            }
+            progress.Update(counters_.global_step, finished.empty()
+                                                       ? ProgressMetrics{}
+                                                       : ProgressMetricsOf(logs_.Rolling()));
+            while (counters_.global_step >= next_checkpoint) {
+              checkpoint();
+              next_checkpoint += options_.checkpoint_interval;
+            }
+            return !StopFlag::StopRequested();
+          });
+      IterationTiming timing;
+      timing.rollout_s = SecondsSince(rollout_start);
+      summary_.rollout_s += timing.rollout_s;
+      if (!complete) {
+        stopped = true;
+        break;
+      }
+      const Clock::time_point update_start = Clock::now();
+      buffer_.ComputeReturnsAndAdvantages(options_.gamma, options_.gae_lambda);
+      const UpdateStats stats = updater_.Update(buffer_, generator_);
+      timing.update_s = SecondsSince(update_start);
+      summary_.update_s += timing.update_s;
+      ++counters_.rollouts;
+      counters_.n_updates = updater_.n_updates();
+      timing.fps = (counters_.global_step - first_step) / SecondsSince(start);
+      logs_.AddUpdate(counters_.global_step, stats, timing);
+      stopped = StopFlag::StopRequested();
+    }
+    checkpoint();
+    progress.Finish();
+
+    summary_.counters = counters_;
+    summary_.session_steps = counters_.global_step - first_step;
+    summary_.wall_s = SecondsSince(start);
+    summary_.steps_per_s = summary_.session_steps / summary_.wall_s;
+    summary_.env_s = collector_.env_seconds();
+    summary_.finished = counters_.global_step >= options_.total_steps;
+    summary_.rolling = logs_.Rolling();
+    WriteTextFileAtomically(run_dir_ / "summary.json",
+                            SummaryJson(config_, summary_).dump(2) + "\n");
+    return summary_;
+  }
+
+ private:
+  static ActorCriticOptions ModelOptions(const Config& config, bool resume) {
+    ActorCriticOptions options = ActorCriticOptionsFrom(config);
+    if (resume) options.extractor.encoder.clear();  // the weights come from the checkpoint
+    return options;
+  }
+
+  static int Threads(int configured) {
+    return configured > 0 ? configured
+                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  }
+
+  Config config_;
+  std::filesystem::path run_dir_;
+  PpoOptions options_;
+  ActorCritic model_;
+  PpoUpdater updater_;
+  torch::Generator generator_;
+  TrainingCounters counters_;
+  RolloutCollector collector_;
+  TrainingLogs logs_;
+  RolloutBuffer buffer_;
+  PpoRunSummary summary_;
+};
+
+}  // namespace
+
+PpoRunSummary TrainPpo(const Config& config, const std::filesystem::path& run_dir, bool resume) {
+  // The networks are far too small for intra-op threads; idle OpenMP workers would only compete
+  // with the environment's threads.
+  torch::set_num_threads(1);
+  PpoTrainer trainer(config, run_dir, resume);
+  return trainer.Run();
+}
+
+}  // namespace colav

@@ -1,0 +1,34 @@
+// PPO training of the collision-avoidance agent (spec README "PPO agent"; Stable-Baselines3
+// semantics, reference-learning 6.3-6.5): rollouts of n_steps x n_envs from the batched
+// environment, GAE, n_epochs of minibatch updates, checkpoints every checkpoint_interval steps and
+// at the end, logs and a summary in the run folder. SIGINT / SIGTERM checkpoint and stop cleanly;
+// a NaN or Inf stops training with TrainingDiverged, keeping the last good checkpoint.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+
+#include "src/config.h"
+#include "train/ppo/checkpoint.h"
+#include "train/ppo/logs.h"
+
+namespace colav {
+
+struct PpoRunSummary {
+  TrainingCounters counters;  ///< at the end of the session
+  std::int64_t session_steps = 0;
+  double wall_s = 0.0;        ///< this session
+  double steps_per_s = 0.0;   ///< this session
+  double rollout_s = 0.0;     ///< of which collecting rollouts ...
+  double env_s = 0.0;         ///< ... (of which stepping the worlds)
+  double update_s = 0.0;      ///< ... PPO updates
+  double checkpoint_s = 0.0;  ///< ... writing checkpoints
+  bool finished = false;      ///< reached ppo.total_steps (false: stopped by a signal)
+  RollingEpisodeStats rolling;
+};
+
+/// Trains the agent configured by `config` (AddPpoKeys) in run_dir, from scratch or resuming from
+/// its checkpoint, and writes run_dir/summary.json.
+PpoRunSummary TrainPpo(const Config& config, const std::filesystem::path& run_dir, bool resume);
+
+}  // namespace colav

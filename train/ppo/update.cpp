@@ -1,0 +1,106 @@
+#include "train/ppo/update.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "models/actor_critic_kernels.h"
+
+namespace colav {
+
+PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
+    : options_(options),
+      policy_(model, std::max(options.batch_size, options.n_envs)),
+      optimizer_(model->TrainableParameters(), options.adam),
+      rows_(options.batch_size),
+      actions_(static_cast<std::size_t>(options.batch_size) * kActionSize),
+      old_log_probs_(options.batch_size),
+      advantages_(options.batch_size),
+      returns_(options.batch_size),
+      d_mean_(static_cast<std::size_t>(options.batch_size) * kActionSize),
+      d_value_(options.batch_size) {}
+
+PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
+  const bool frozen_features = !policy_.extractor_trainable();
+  const int width = frozen_features ? policy_.features_dim() : kObservationSize;
+  const float* source = frozen_features ? features_.data() : buffer.observations().data();
+  for (int b = 0; b < B; ++b) {
+    const std::int64_t i = indices[b];
+    rows_[b] = source + i * width;
+    std::copy_n(&buffer.actions()[i * kActionSize], kActionSize, &actions_[b * kActionSize]);
+    old_log_probs_[b] = buffer.log_probs()[i];
+    advantages_[b] = buffer.advantages()[i];
+    returns_[b] = buffer.returns()[i];
+  }
+  return {B, actions_.data(), old_log_probs_.data(), advantages_.data(), returns_.data()};
+}
+
+UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& generator) {
+  const int n = buffer.size();
+  if (!policy_.extractor_trainable()) {
+    // A frozen extractor maps each observation to fixed features: encode the rollout once.
+    features_.resize(static_cast<std::size_t>(n) * policy_.features_dim());
+    policy_.Features(buffer.observations().data(), n, features_.data());
+  }
+  UpdateStats stats;
+  int minibatches = 0;
+  float d_log_std[kActionSize];
+  for (int epoch = 0; epoch < options_.n_epochs; ++epoch) {
+    const torch::Tensor permutation = torch::randperm(n, generator, torch::kLong);
+    const std::int64_t* order = permutation.data_ptr<std::int64_t>();
+    double epoch_kl = 0.0;
+    int epoch_minibatches = 0;
+    for (int start = 0; start < n; start += options_.batch_size) {
+      const int B = std::min(options_.batch_size, n - start);
+      const PpoMinibatch batch = Gather(buffer, order + start, B);
+      if (policy_.extractor_trainable()) {
+        policy_.ForwardObservations(rows_.data(), B);
+      } else {
+        policy_.ForwardFeatures(rows_.data(), B);
+      }
+      const PpoLossStats loss =
+          PpoLossGradients(policy_.mean(), policy_.log_std(), policy_.value(), batch, options_.loss,
+                           d_mean_.data(), d_log_std, d_value_.data());
+      if (!std::isfinite(loss.loss)) {
+        throw TrainingDiverged("non-finite loss (policy " +
+                               std::to_string(loss.policy_gradient_loss) + ", value " +
+                               std::to_string(loss.value_loss) + ") in update " +
+                               std::to_string(n_updates_ + epoch + 1));
+      }
+      policy_.Backward(d_mean_.data(), d_value_.data(), d_log_std, B);
+      const double norm = PolicyOptimizer::GradientNorm(policy_.gradients());
+      optimizer_.Step(policy_.gradients(),
+                      PolicyOptimizer::ClipCoefficient(norm, options_.max_grad_norm));
+
+      stats.policy_gradient_loss += loss.policy_gradient_loss;
+      stats.value_loss += loss.value_loss;
+      stats.entropy_loss += loss.entropy_loss;
+      stats.clip_fraction += loss.clip_fraction;
+      stats.loss = loss.loss;
+      epoch_kl += loss.approx_kl;
+      ++epoch_minibatches;
+      ++minibatches;
+    }
+    stats.approx_kl = epoch_kl / epoch_minibatches;
+  }
+  CheckParametersFinite();
+  n_updates_ += options_.n_epochs;
+  stats.policy_gradient_loss /= minibatches;
+  stats.value_loss /= minibatches;
+  stats.entropy_loss /= minibatches;
+  stats.clip_fraction /= minibatches;
+  stats.explained_variance = buffer.ExplainedVariance();
+  for (int j = 0; j < kActionSize; ++j) stats.std += std::exp(policy_.log_std()[j]) / kActionSize;
+  stats.n_updates = n_updates_;
+  return stats;
+}
+
+void PpoUpdater::CheckParametersFinite() const {
+  for (const torch::Tensor& parameter : policy_.parameters()) {
+    if (!kernels::AllFinite(parameter.data_ptr<float>(), static_cast<int>(parameter.numel()))) {
+      throw TrainingDiverged("non-finite parameter after update " +
+                             std::to_string(n_updates_ + options_.n_epochs));
+    }
+  }
+}
+
+}  // namespace colav

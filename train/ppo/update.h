@@ -1,0 +1,67 @@
+// The PPO update of one rollout (SB3 PPO.train, reference-learning 6.4): n_epochs passes over the
+// rollout in shuffled minibatches; per minibatch the clipped-surrogate loss, its gradients through
+// the hand-written backward pass, global gradient-norm clipping and one Adam step over the
+// trainable parameters.
+#pragma once
+
+#include <torch/torch.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "models/actor_critic_fast.h"
+#include "train/ppo/config.h"
+#include "train/ppo/optimizer.h"
+#include "train/ppo/rollout_buffer.h"
+
+namespace colav {
+
+/// A loss or a parameter became NaN or infinite: training cannot go on.
+class TrainingDiverged : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// What SB3 logs after an update (its train/* names).
+struct UpdateStats {
+  double policy_gradient_loss = 0.0;  ///< mean over all minibatches
+  double value_loss = 0.0;
+  double entropy_loss = 0.0;
+  double approx_kl = 0.0;  ///< mean over the last epoch's minibatches
+  double clip_fraction = 0.0;
+  double loss = 0.0;  ///< of the last minibatch
+  double explained_variance = 0.0;
+  double std = 0.0;            ///< mean of exp(log_std) after the update
+  std::int64_t n_updates = 0;  ///< epochs run so far (SB3 counts epochs)
+};
+
+class PpoUpdater {
+ public:
+  PpoUpdater(ActorCritic model, const PpoOptions& options);
+
+  /// Trains on `buffer` (returns and advantages computed), shuffling with `generator`. Throws
+  /// TrainingDiverged on a non-finite loss or parameter.
+  UpdateStats Update(const RolloutBuffer& buffer, torch::Generator& generator);
+
+  FastActorCritic& policy() { return policy_; }
+  PolicyOptimizer& optimizer() { return optimizer_; }
+  std::int64_t n_updates() const { return n_updates_; }
+  void set_n_updates(std::int64_t n_updates) { n_updates_ = n_updates; }
+
+ private:
+  PpoMinibatch Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
+  void CheckParametersFinite() const;
+
+  PpoOptions options_;
+  FastActorCritic policy_;
+  PolicyOptimizer optimizer_;
+  std::int64_t n_updates_ = 0;
+  std::vector<float> features_;  // [rollout, features_dim] when the extractor is frozen
+  std::vector<const float*> rows_;
+  std::vector<float> actions_, old_log_probs_, advantages_, returns_;
+  std::vector<float> d_mean_, d_value_;
+};
+
+}  // namespace colav

@@ -1,0 +1,86 @@
+#include "train/vae/trainer.h"
+
+#include <ATen/CPUGeneratorImpl.h>
+
+#include <chrono>
+
+#include "models/vae_loss.h"
+#include "src/seeding.h"
+#include "train/vae/evaluation.h"
+
+namespace colav {
+namespace {
+
+torch::Generator SeededGenerator(std::uint64_t seed, const char* stream, std::uint64_t index) {
+  return at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(seed, stream, index));
+}
+
+}  // namespace
+
+ConvVae MakeVae(const VaeOptions& options, std::uint64_t seed) {
+  // Module initialisers draw from LibTorch's global generator.
+  torch::manual_seed(DeriveSeed(seed, "vae.init"));
+  return ConvVae(options);
+}
+
+VaeTrainer::VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, std::uint64_t seed)
+    : options_(options),
+      data_(data),
+      seed_(seed),
+      noisy_train_(WithTrainingNoise(data.train, options.train_noise_variance,
+                                     DeriveSeed(seed, "vae.noise"), options.clip_noisy_scans)),
+      shuffled_train_(torch::empty_like(noisy_train_)),
+      model_(MakeVae(options.model, seed)),
+      optimizer_(model_->parameters(), options.learning_rate) {}
+
+EpochLosses VaeTrainer::RunEpoch(std::int64_t epoch,
+                                 const std::function<void(std::int64_t, double)>& on_batch) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::int64_t count = noisy_train_.size(0);
+  torch::Generator shuffle =
+      SeededGenerator(seed_, "vae.shuffle", static_cast<std::uint64_t>(epoch));
+  torch::Generator sample = SeededGenerator(seed_, "vae.sample", static_cast<std::uint64_t>(epoch));
+  // One gather per epoch; the minibatches are then contiguous views.
+  torch::index_select_out(shuffled_train_, noisy_train_, 0,
+                          torch::randperm(count, shuffle, torch::kLong));
+
+  double bce_sum = 0.0;
+  double kl_sum = 0.0;
+  for (std::int64_t begin = 0; begin < count; begin += options_.batch_size) {
+    const std::int64_t size = std::min(options_.batch_size, count - begin);
+    const torch::Tensor x = shuffled_train_.narrow(0, begin, size);
+    optimizer_.ZeroGrad();
+    const VaeLoss loss = ComputeVaeLoss(model_->forward(x, sample), x, options_.beta);
+    loss.total.backward();
+    optimizer_.Step();
+    // Read the scalars directly: item() would dispatch an operator per call.
+    bce_sum += static_cast<double>(*loss.bce.data_ptr<float>()) * static_cast<double>(size);
+    kl_sum += static_cast<double>(*loss.kl.data_ptr<float>()) * static_cast<double>(size);
+    if (on_batch) {
+      on_batch(begin + size,
+               (bce_sum + options_.beta * kl_sum) / static_cast<double>(begin + size));
+    }
+  }
+
+  const VaeEvaluation validation =
+      EvaluateVae(model_, data_.validation, options_.beta,
+                  DeriveSeed(seed_, "vae.validation", static_cast<std::uint64_t>(epoch)),
+                  options_.evaluation_batch_size);
+  EpochLosses losses;
+  losses.epoch = epoch;
+  losses.train_bce = bce_sum / static_cast<double>(count);
+  losses.train_kl = kl_sum / static_cast<double>(count);
+  losses.validation_bce = validation.bce;
+  losses.validation_kl = validation.kl;
+  losses.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return losses;
+}
+
+ConvVae TrainVaeInMemory(const VaeTrainingOptions& options, const VaeData& data,
+                         std::uint64_t seed) {
+  VaeTrainer trainer(options, data, seed);
+  for (std::int64_t epoch = 1; epoch <= options.epochs; ++epoch) trainer.RunEpoch(epoch);
+  return trainer.model();
+}
+
+}  // namespace colav
