@@ -8,7 +8,7 @@
 #include "src/error.h"
 #include "src/hdf5_io.h"
 #include "tests/src/test_util.h"
-#include "train/dataset/generation.h"
+#include "tests/train/dataset/small_dataset.h"
 
 namespace colav {
 namespace {
@@ -17,11 +17,7 @@ using testing_util::TemporaryFolder;
 using testing_util::UserErrorMessage;
 
 ScanDataset SmallDataset(std::uint64_t seed) {
-  DatasetGenerationOptions options;
-  options.sim_scans = 20;
-  options.synthetic_scans = 40;
-  options.seed = seed;
-  ScanDataset dataset = GenerateScanDataset(options, [](std::int64_t) {});
+  ScanDataset dataset = testing_util::SmallScanDataset(seed);
   dataset.config = "dataset:\n  seed: " + std::to_string(seed) + "\n";
   return dataset;
 }

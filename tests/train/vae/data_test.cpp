@@ -5,25 +5,17 @@
 #include <cmath>
 
 #include "tests/src/test_util.h"
+#include "tests/train/dataset/small_dataset.h"
 #include "train/dataset/file.h"
-#include "train/dataset/generation.h"
 
 namespace colav {
 namespace {
 
 using testing_util::TemporaryFolder;
 
-ScanDataset SmallDataset(std::uint64_t seed) {
-  DatasetGenerationOptions options;
-  options.sim_scans = 20;
-  options.synthetic_scans = 40;
-  options.seed = seed;
-  return GenerateScanDataset(options, [](std::int64_t) {});
-}
-
 TEST(DatasetLoadingTest, SplitsTransformAndNoise) {
   const TemporaryFolder folder;
-  const ScanDataset dataset = SmallDataset(3);
+  const ScanDataset dataset = testing_util::SmallScanDataset(3);
   WriteScanDataset(dataset, folder / "data.h5");
   const VaeData linear = LoadVaeData(folder / "data.h5", ClosenessTransform::kLinear);
   const VaeData log = LoadVaeData(folder / "data.h5", ClosenessTransform::kLog);
