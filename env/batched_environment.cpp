@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include "env/environment.h"
-#include "src/threads/thread_pool.h"
 #include "env/training_scenario.h"
 #include "src/seeding.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 
@@ -22,20 +22,20 @@ BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_
       truncated_(num_envs, 0),
       finished_episodes_(num_envs) {
   const auto source = std::make_shared<TrainingScenarioGenerator>();
-  for (int i = 0; i < num_envs; ++i)
+  for (int i = 0; i < num_envs; ++i) {
     worlds_.push_back(std::make_unique<Environment>(config, source));
+  }
 }
 
 BatchedEnvironment::~BatchedEnvironment() = default;
 
-std::uint64_t BatchedEnvironment::EpisodeSeed(int index) const {
-  return DeriveSeed(seed_, "episode",
-                    (static_cast<std::uint64_t>(index) << 32U) + episode_counts_[index]);
+std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t episode) {
+  return DeriveSeed(seed, "episode", (static_cast<std::uint64_t>(world) << 32U) + episode);
 }
 
 void BatchedEnvironment::Reset() {
   pool_->ParallelFor(num_envs_, [this](int i) {
-    worlds_[i]->Reset(EpisodeSeed(i),
+    worlds_[i]->Reset(TrainingEpisodeSeed(seed_, i, episode_counts_[i]),
                       &observations_[static_cast<std::size_t>(i) * kObservationSize]);
     terminated_[i] = truncated_[i] = 0;
     rewards_[i] = 0.0f;
@@ -61,7 +61,7 @@ void BatchedEnvironment::StepWorld(int i, const float* action) {
     std::copy(observation, observation + kObservationSize,
               &final_observations_[static_cast<std::size_t>(i) * kObservationSize]);
     ++episode_counts_[i];
-    worlds_[i]->Reset(EpisodeSeed(i), observation);
+    worlds_[i]->Reset(TrainingEpisodeSeed(seed_, i, episode_counts_[i]), observation);
   }
 }
 

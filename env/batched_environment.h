@@ -13,10 +13,14 @@ namespace colav {
 class Environment;
 class ThreadPool;
 
+/// The seed episode `episode` (counted from 0) of world `world` of a BatchedEnvironment built
+/// with `seed` is generated from.
+std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t episode);
+
 class BatchedEnvironment {
  public:
   /// num_envs worlds of the paper's training scenario; episode k of world i is generated from
-  /// DeriveSeed(seed, "episode", i) and k, so a run is a pure function of `seed`.
+  /// TrainingEpisodeSeed(seed, i, k), so a run is a pure function of `seed`.
   BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
                      std::uint64_t seed);
   ~BatchedEnvironment();
@@ -47,7 +51,6 @@ class BatchedEnvironment {
 
  private:
   void StepWorld(int index, const float* action);
-  std::uint64_t EpisodeSeed(int index) const;
 
   int num_envs_;
   std::uint64_t seed_;

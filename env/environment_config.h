@@ -1,16 +1,23 @@
-// The environment's configuration keys (section `env.` of every program's config).
+// The environment's configuration keys (section `env.` of every program's config), bound to the
+// fields of EnvironmentConfig, and the names of the closeness transforms.
 #pragma once
 
+#include <string>
+
 #include "env/environment_spec.h"
-#include "src/config.h"
+#include "src/options_binding.h"
 
 namespace colav {
 
-/// Declares env.closeness, env.test_mode, env.max_steps, env.goal_radius, env.goal_progress,
-/// env.min_cumulative_reward with the paper's defaults.
-void AddEnvironmentKeys(ConfigSchema& schema);
+/// "linear" or "log"; anything else is a UserError naming the value.
+ClosenessTransform ParseClosenessTransform(const std::string& name);
+/// The inverse of ParseClosenessTransform.
+std::string ClosenessTransformName(ClosenessTransform transform);
+/// The two together, for an options binding.
+TextCodec<ClosenessTransform> ClosenessTransformCodec();
 
-/// The EnvironmentConfig of a resolved configuration that declared AddEnvironmentKeys.
-EnvironmentConfig EnvironmentConfigFrom(const Config& config);
+/// env.closeness, env.test_mode, env.max_steps, env.goal_radius, env.goal_progress,
+/// env.min_cumulative_reward; a program includes them with its own defaults.
+OptionsBinding<EnvironmentConfig> EnvironmentBinding();
 
 }  // namespace colav

@@ -5,13 +5,21 @@
 
 #include "env/obstacles.h"
 #include "env/path.h"
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
 
 // Margin around the drawn objects (m).
 constexpr double kMargin = 30.0;
+
+constexpr const char* kPathColour = "#1a9850";
+constexpr const char* kStaticObstacleColour = "#7f7f7f";
+constexpr const char* kVesselColour = "#e08214";
+constexpr const char* kTrackColour = "#2166ac";
+// Diverging red-white-blue for the tracks coloured by reward: red where it is low.
+constexpr const char* kTrackPalette = "(0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')";
 
 void AppendPolygon(std::ostringstream& out, const ConvexPolygon& hull) {
   for (int k = 0; k <= hull.size; ++k) {
@@ -95,36 +103,38 @@ void PlotScene(const Scenario& scenario, const std::vector<SceneTrack>& tracks, 
                const std::filesystem::path& png, const std::string& title,
                const std::string& colour_label) {
   std::ostringstream script;
-  script
-      << DataBlocks(scenario, tracks, steps) << ViewRange(scenario, tracks)
-      << "set size ratio -1\nset grid lc rgb '#dddddd'\nset key outside bottom center horizontal\n"
-      << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset title " << GnuplotQuote(title) << "\n";
+  script << DataBlocks(scenario, tracks, steps) << ViewRange(scenario, tracks)
+         << "set size ratio -1\n"
+         << LightGrid() << "set key outside bottom center horizontal\n"
+         << "set xlabel 'x (m)'\nset ylabel 'y (m)'\nset title " << GnuplotQuote(title) << "\n";
   bool coloured = false;
   for (const SceneTrack& track : tracks) coloured |= !track.colour_values.empty();
   if (coloured) {
-    script << "set palette defined (0 '#b2182b', 0.5 '#f7f7f7', 1 '#2166ac')\n"
+    script << "set palette defined " << kTrackPalette << "\n"
            << "set cblabel " << GnuplotQuote(colour_label) << "\n";
   }
-  script << "plot $static with filledcurves lc rgb '#7f7f7f' fs transparent solid 0.6 title "
-            "'static obstacles', \\\n"
-         << "  $start_hulls with lines lc rgb '#e08214' dt 2 title 'vessels at start', \\\n"
-         << "  $end_hulls with filledcurves lc rgb '#e08214' fs transparent solid 0.5 title "
-            "'vessels at end', \\\n"
-         << "  $path with lines lw 2 lc rgb '#1a9850' title 'path'";
+  script << "plot $static with filledcurves " << LineColour(kStaticObstacleColour)
+         << " fs transparent solid 0.6 title 'static obstacles', \\\n"
+         << "  $start_hulls with lines " << LineColour(kVesselColour)
+         << " dt 2 title 'vessels at start', \\\n"
+         << "  $end_hulls with filledcurves " << LineColour(kVesselColour)
+         << " fs transparent solid 0.5 title 'vessels at end', \\\n"
+         << "  $path with lines lw 2 " << LineColour(kPathColour) << " title 'path'";
   for (std::size_t t = 0; t < tracks.size(); ++t) {
     const SceneTrack& track = tracks[t];
     script << ", \\\n  $track" << t << " using 1:2"
-           << (track.colour_values.empty() ? " with lines lw 2 lc rgb '#2166ac'"
-                                           : ":3 with lines lw 2 lc palette")
+           << (track.colour_values.empty() ? " with lines lw 2 " + LineColour(kTrackColour)
+                                           : std::string(":3 with lines lw 2 lc palette"))
            << " title " << GnuplotQuote(track.label);
     if (track.collision && !track.positions.empty()) {
       script << ", \\\n  $track" << t << " every ::" << track.positions.size() - 1
-             << " using 1:2 with points pt 3 ps 3 lw 3 lc rgb 'red' title 'collision'";
+             << " using 1:2 with points pt 3 ps 3 lw 3 " << LineColour("red")
+             << " title 'collision'";
     }
   }
   script << ", \\\n  '+' using (" << scenario.vessel_position.x() << "):("
-         << scenario.vessel_position.y()
-         << ") every ::0::0 with points pt 7 ps 1.5 lc rgb 'black' title 'start'\n";
+         << scenario.vessel_position.y() << ") every ::0::0 with points pt 7 ps 1.5 "
+         << LineColour("black") << " title 'start'\n";
   RenderGnuplotPng(script.str(), png);
 }
 

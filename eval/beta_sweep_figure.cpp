@@ -5,9 +5,8 @@
 #include <cstdio>
 #include <sstream>
 
-#include "eval/figure_colours.h"
-#include "eval/figure_text.h"
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
@@ -55,17 +54,16 @@ void PlotBetaSweep(std::vector<BetaSweepPoint> points, const std::string& title,
                    const std::filesystem::path& png) {
   SortByBeta(points);
   std::ostringstream script;
-  script << DataBlock(points) << "set multiplot layout 2,2 title "
-         << GnuplotQuote(GnuplotEnhancedText(title))
-         << "\nset grid lc rgb '#dddddd'\nset xlabel 'β (KL weight of the pre-trained VAE)'\n"
+  script << DataBlock(points) << MultiplotLayout(2, 2, GnuplotEnhancedText(title)) << LightGrid()
+         << "set xlabel 'β (KL weight of the pre-trained VAE)'\n"
          << "set offsets graph 0.05, graph 0.05, graph 0.05, graph 0.05\nunset key\n";
-  const std::string colour = GnuplotQuote(FigureColour(0));
+  const std::string line_colour = LineColour(FigureColour(0));
   for (std::size_t p = 0; p < kPanels.size(); ++p) {
     const int mean = 2 + 3 * static_cast<int>(p);
     script << "set title " << GnuplotQuote(kPanels[p].title) << "\nset ylabel "
            << GnuplotQuote(kPanels[p].ylabel) << "\nplot $sweep using 1:" << mean << ":" << mean + 1
-           << ":" << mean + 2 << " with yerrorbars pt 7 ps 1.2 lc rgb " << colour
-           << ", $sweep using 1:" << mean << " with lines lw 1.5 lc rgb " << colour << "\n";
+           << ":" << mean + 2 << " with yerrorbars pt 7 ps 1.2 " << line_colour
+           << ", $sweep using 1:" << mean << " with lines lw 1.5 " << line_colour << "\n";
   }
   script << "unset multiplot\n";
   RenderGnuplotPng(script.str(), png, 1200, 900);

@@ -21,7 +21,7 @@ struct Lane {
 void StepLane(Lane& lane, const float* action) {
   const double action_values[kActionSize] = {action[0], action[1]};
   const StepResult result = lane.env->Step(action_values, lane.observation);
-  lane.outcome.positions.push_back(lane.env->world().vessel().head<2>());
+  lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
   lane.outcome.cumulative_rewards.push_back(lane.outcome.cumulative_rewards.back() + result.reward);
   if (result.episode) {
     lane.outcome.metrics = *result.episode;
@@ -61,7 +61,7 @@ std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
           config, std::make_shared<FixedScenarioSource>(episode.scenario));
       lane.observation = observations[m].data_ptr<float>() + e * kObservationSize;
       lane.env->Reset(episode.seed.value_or(0), lane.observation);
-      lane.outcome.positions.push_back(lane.env->world().vessel().head<2>());
+      lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
       lane.outcome.cumulative_rewards.push_back(0.0);
     }
   }

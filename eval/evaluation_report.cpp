@@ -10,14 +10,11 @@
 namespace colav {
 namespace {
 
-nlohmann::ordered_json IntervalJson(const MeanConfidenceInterval& interval) {
-  return {{"n", interval.count}, {"mean", interval.mean}, {"sd", interval.sd},
-          {"low", interval.low}, {"high", interval.high}, {"half_width", interval.half_width}};
-}
-
 nlohmann::ordered_json MetricsJson(const std::vector<MetricSummary>& metrics) {
   nlohmann::ordered_json json = nlohmann::ordered_json::object();
-  for (const MetricSummary& metric : metrics) json[metric.key] = IntervalJson(metric.interval);
+  for (const MetricSummary& metric : metrics) {
+    json[metric.key] = ConfidenceIntervalJson(metric.interval);
+  }
   return json;
 }
 
@@ -54,8 +51,9 @@ std::string SummaryTable(const std::vector<ModelSummary>& models) {
     table << "| " << metric.label << " |";
     for (const ModelSummary& model : models) {
       table << ' ' << FormatInterval(model.metrics[k].interval, metric.is_fraction, false);
-      if (metric.key == "goal")
+      if (metric.key == "goal") {
         table << " (" << model.goals_reached << '/' << model.episodes << ')';
+      }
       table << " |";
     }
     table << '\n';
@@ -86,17 +84,6 @@ std::string DifferenceTable(const std::vector<PairedDifference>& differences) {
   return table.str();
 }
 
-MeanConfidenceInterval IntervalFromJson(const nlohmann::json& json) {
-  MeanConfidenceInterval interval;
-  interval.count = json.at("n").get<std::size_t>();
-  interval.mean = json.at("mean").get<double>();
-  interval.sd = json.at("sd").get<double>();
-  interval.low = json.at("low").get<double>();
-  interval.high = json.at("high").get<double>();
-  interval.half_width = json.at("half_width").get<double>();
-  return interval;
-}
-
 ModelSummary ModelFromJson(const nlohmann::json& json) {
   ModelSummary model;
   model.name = json.at("name").get<std::string>();
@@ -106,7 +93,8 @@ ModelSummary ModelFromJson(const nlohmann::json& json) {
   model.collisions = json.at("collisions").get<int>();
   model.truncated = json.at("truncated").get<int>();
   for (const SummaryMetric& metric : SummaryMetrics()) {
-    model.metrics.push_back({metric.key, IntervalFromJson(json.at("metrics").at(metric.key))});
+    model.metrics.push_back(
+        {metric.key, ConfidenceIntervalFromJson(json.at("metrics").at(metric.key))});
   }
   return model;
 }

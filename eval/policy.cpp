@@ -73,7 +73,7 @@ torch::Tensor Policy::Forward(const torch::Tensor& observations) {
     throw UserError(path_.string() + ": forward must return one tensor of actions, got " +
                     output.tagKind());
   }
-  const torch::Tensor actions = output.toTensor().to(torch::kFloat32);
+  torch::Tensor actions = output.toTensor().to(torch::kFloat32);
   if (!torch::isfinite(actions).all().item<bool>()) {
     throw UserError(path_.string() + ": forward gave a non-finite action");
   }

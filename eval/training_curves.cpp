@@ -5,12 +5,11 @@
 #include <limits>
 #include <sstream>
 
-#include "eval/csv_table.h"
-#include "eval/figure_colours.h"
-#include "eval/figure_text.h"
 #include "eval/rolling_statistics.h"
+#include "src/csv_table.h"
 #include "src/error.h"
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
@@ -37,6 +36,7 @@ const std::array<Panel, 4> kPanels = {{
 // within [0, ceiling] since every metric is non-negative.
 std::string DataBlock(const TrainingRun& run, std::size_t index, std::size_t window) {
   std::vector<std::vector<RollingPoint>> rolling;
+  rolling.reserve(kPanels.size());
   for (const Panel& panel : kPanels) rolling.push_back(RollingMeanSd(run.*panel.values, window));
   std::ostringstream block;
   block.precision(8);
@@ -62,11 +62,11 @@ std::string PanelPlot(const std::vector<TrainingRun>& runs, std::size_t panel) {
        << GnuplotQuote(kPanels[panel].ylabel) << "\n"
        << (panel == 0 ? "set key bottom right\n" : "unset key\n") << "plot ";
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    const std::string colour = GnuplotQuote(FigureColour(k));
+    const std::string line_colour = LineColour(FigureColour(k));
     plot << (k == 0 ? "" : ", \\\n  ") << "$run" << k << " using 1:" << mean_column + 1 << ":"
-         << mean_column + 2 << " with filledcurves lc rgb " << colour
+         << mean_column + 2 << " with filledcurves " << line_colour
          << " fs transparent solid 0.18 noborder notitle, \\\n  $run" << k
-         << " using 1:" << mean_column << " with lines lw 2 lc rgb " << colour << " title "
+         << " using 1:" << mean_column << " with lines lw 2 " << line_colour << " title "
          << GnuplotQuote(GnuplotEnhancedText(runs[k].label));
   }
   return plot.str() + "\n";
@@ -89,10 +89,10 @@ void PlotTrainingCurves(const std::vector<TrainingRun>& runs, std::size_t window
                         const std::string& title, const std::filesystem::path& png) {
   std::ostringstream script;
   for (std::size_t k = 0; k < runs.size(); ++k) script << DataBlock(runs[k], k, window);
-  script << "set multiplot layout 2,2 title "
-         << GnuplotQuote(GnuplotEnhancedText(title) + " (rolling mean and sd over " +
-                         std::to_string(window) + " episodes)")
-         << "\nset grid lc rgb '#dddddd'\nset xlabel 'environment steps (millions)'\n"
+  script << MultiplotLayout(2, 2,
+                            GnuplotEnhancedText(title) + " (rolling mean and sd over " +
+                                std::to_string(window) + " episodes)")
+         << LightGrid() << "set xlabel 'environment steps (millions)'\n"
          << "set autoscale xfix\n";  // the x axis ends at the last step, not the next tic
   for (std::size_t panel = 0; panel < kPanels.size(); ++panel) script << PanelPlot(runs, panel);
   script << "unset multiplot\n";

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "env/scene_plot.h"
-#include "eval/figure_text.h"
+#include "src/figures/gnuplot.h"
 
 namespace colav {
 namespace {

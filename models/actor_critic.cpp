@@ -46,7 +46,7 @@ void DefaultConvInit(torch::nn::Conv1d& conv, torch::Generator& generator) {
 
 }  // namespace
 
-void OrthogonalInit(torch::Tensor weight, double gain, torch::Generator& generator) {
+void OrthogonalInit(const torch::Tensor& weight, double gain, torch::Generator& generator) {
   torch::NoGradGuard no_grad;
   const std::int64_t rows = weight.size(0);
   const std::int64_t columns = weight.numel() / rows;
@@ -97,17 +97,6 @@ std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
   const torch::Tensor features = features_extractor_->forward(observations);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(features)),
           value_net_->forward(mlp_extractor_->value_net->forward(features))};
-}
-
-std::pair<DiagonalGaussian, torch::Tensor> ActorCriticImpl::DistributionAndValue(
-    const torch::Tensor& observations) {
-  auto [mean, value] = forward(observations);
-  return {DiagonalGaussian{mean, log_std_}, value};
-}
-
-torch::Tensor ActorCriticImpl::Value(const torch::Tensor& observations) {
-  return value_net_->forward(
-      mlp_extractor_->value_net->forward(features_extractor_->forward(observations)));
 }
 
 std::vector<torch::Tensor> ActorCriticImpl::TrainableParameters() const {

@@ -18,7 +18,6 @@
 #include <utility>
 #include <vector>
 
-#include "models/diagonal_gaussian.h"
 #include "models/feature_extractor.h"
 
 namespace colav {
@@ -46,11 +45,6 @@ class ActorCriticImpl : public torch::nn::Module {
 
   /// observations [B, 186] -> (action mean [B, 2], value [B, 1]).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
-  /// The Gaussian over actions and the value of observations.
-  std::pair<DiagonalGaussian, torch::Tensor> DistributionAndValue(
-      const torch::Tensor& observations);
-  /// value [B, 1] of observations.
-  torch::Tensor Value(const torch::Tensor& observations);
 
   /// The parameters the optimiser updates: all but those of a locked encoder, in module order.
   std::vector<torch::Tensor> TrainableParameters() const;
@@ -76,6 +70,6 @@ TORCH_MODULE(ActorCritic);
 
 /// Fills `weight` (rows = dim 0) with a random orthogonal matrix times `gain`, drawn from
 /// `generator` (torch.nn.init.orthogonal_'s algorithm).
-void OrthogonalInit(torch::Tensor weight, double gain, torch::Generator& generator);
+void OrthogonalInit(const torch::Tensor& weight, double gain, torch::Generator& generator);
 
 }  // namespace colav

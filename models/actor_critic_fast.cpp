@@ -11,6 +11,7 @@ float* Data(const torch::Tensor& tensor) { return tensor.data_ptr<float>(); }
 
 std::vector<torch::Tensor> ZerosLike(const std::vector<torch::Tensor>& tensors) {
   std::vector<torch::Tensor> zeros;
+  zeros.reserve(tensors.size());
   for (const torch::Tensor& tensor : tensors) zeros.push_back(torch::zeros_like(tensor));
   return zeros;
 }

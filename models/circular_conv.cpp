@@ -1,6 +1,8 @@
 #include "models/circular_conv.h"
 
 #include <cmath>
+#include <memory>
+#include <string>
 #include <tuple>
 
 #include "models/circular_kernels.h"
@@ -68,11 +70,26 @@ void CircularConv1dImpl::pretty_print(std::ostream& stream) const {
          << ", padding=" << options_.padding() << ")";
 }
 
-void ResetConvolutionParameters(torch::Tensor& weight, torch::Tensor& bias) {
-  torch::nn::init::kaiming_uniform_(weight, /*a=*/std::sqrt(5.0));
+void ResetConvolutionParameters(torch::Tensor& weight, torch::Tensor& bias,
+                                const c10::optional<torch::Generator>& generator) {
+  torch::NoGradGuard no_grad;
   const std::int64_t fan_in = std::get<0>(torch::nn::init::_calculate_fan_in_and_fan_out(weight));
-  const double bound = 1.0 / std::sqrt(static_cast<double>(fan_in));
-  torch::nn::init::uniform_(bias, -bound, bound);
+  // torch::nn::init::kaiming_uniform_(weight, a = sqrt(5)) step by step: it takes no generator.
+  const double gain = torch::nn::init::calculate_gain(torch::kLeakyReLU, std::sqrt(5.0));
+  const double weight_bound = std::sqrt(3.0) * (gain / std::sqrt(static_cast<double>(fan_in)));
+  weight.uniform_(-weight_bound, weight_bound, generator);
+  const double bias_bound = 1.0 / std::sqrt(static_cast<double>(fan_in));
+  bias.uniform_(-bias_bound, bias_bound, generator);
+}
+
+void RedrawLayerParameters(torch::nn::Module& module, torch::Generator& generator) {
+  for (const std::shared_ptr<torch::nn::Module>& layer : module.modules()) {
+    torch::OrderedDict<std::string, torch::Tensor> parameters =
+        layer->named_parameters(/*recurse=*/false);
+    torch::Tensor* weight = parameters.find("weight");
+    torch::Tensor* bias = parameters.find("bias");
+    if (weight != nullptr && bias != nullptr) ResetConvolutionParameters(*weight, *bias, generator);
+  }
 }
 
 }  // namespace colav

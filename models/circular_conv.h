@@ -55,9 +55,19 @@ class CircularConv1dImpl : public torch::nn::Module {
 };
 TORCH_MODULE(CircularConv1d);
 
-// LibTorch's convolution initialisation (spec reference-learning 1.8), for Conv1d and
-// ConvTranspose1d layouts alike: Kaiming-uniform with a = sqrt(5) on the weight, bias uniform in
-// +-1/sqrt(fan_in), fan_in being the weight's dim 1 times the kernel size.
-void ResetConvolutionParameters(torch::Tensor& weight, torch::Tensor& bias);
+// LibTorch's Linear and convolution initialisation (spec reference-learning 1.8), for Linear,
+// Conv1d and ConvTranspose1d layouts alike: Kaiming-uniform with a = sqrt(5) on the weight, bias
+// uniform in +-1/sqrt(fan_in), fan_in being the weight's dim 1 times the kernel size. Drawn from
+// `generator` (LibTorch's global one when none is given) with torch::nn::init's arithmetic, so
+// the values are those torch::nn::init draws from the same generator state.
+void ResetConvolutionParameters(torch::Tensor& weight, torch::Tensor& bias,
+                                const c10::optional<torch::Generator>& generator = c10::nullopt);
+
+// Redraws, from `generator`, the parameters of every layer of `module` that has a weight and a
+// bias (Linear, CircularConv1d, CircularConvTranspose1d) with ResetConvolutionParameters, in
+// module order. LibTorch's module constructors draw from the global generator; for a module whose
+// layers are registered as they are made, this gives the weights the constructors would have
+// drawn with the global generator in `generator`'s state.
+void RedrawLayerParameters(torch::nn::Module& module, torch::Generator& generator);
 
 }  // namespace colav

@@ -12,8 +12,7 @@ ConvVaeImpl::ConvVaeImpl(VaeOptions options) : options_(options) {
                                               options_.decoder_padding}));
 }
 
-ConvVaeImpl::Output ConvVaeImpl::forward(const torch::Tensor& x,
-                                         c10::optional<torch::Generator> generator) {
+ConvVaeImpl::Output ConvVaeImpl::forward(const torch::Tensor& x, torch::Generator generator) {
   auto [mu, logvar] = encoder_->forward(x);
   const torch::Tensor eps = torch::randn(mu.sizes(), std::move(generator), mu.options());
   const torch::Tensor z = mu + eps * torch::exp(0.5 * logvar);

@@ -30,9 +30,8 @@ class ConvVaeImpl : public torch::nn::Module {
 
   // Encodes x [B, 180], samples z = mu + eps * exp(logvar / 2) with eps ~ N(0, 1), and decodes z.
   // It samples in training and evaluation alike, as the paper's test error does. eps comes from
-  // `generator` when one is given (reproducible per seed, independent of other threads), else from
-  // LibTorch's global generator (torch::manual_seed).
-  Output forward(const torch::Tensor& x, c10::optional<torch::Generator> generator = c10::nullopt);
+  // `generator` (reproducible per seed, independent of other threads).
+  Output forward(const torch::Tensor& x, torch::Generator generator);
 
   VaeEncoder encoder() const { return encoder_; }
   VaeDecoder decoder() const { return decoder_; }

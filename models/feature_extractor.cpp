@@ -1,5 +1,8 @@
 #include "models/feature_extractor.h"
 
+#include <ATen/CPUGeneratorImpl.h>
+#include <fmt/format.h>
+
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -13,8 +16,9 @@ namespace {
 
 // Largest difference tolerated between the VAE's own mu and this extractor's copy of it.
 constexpr double kEncoderCopyTolerance = 1e-5;
-// Random closeness scans used to check that copy.
+// Random closeness scans used to check that copy, drawn from their own fixed stream.
 constexpr std::int64_t kEncoderCheckSamples = 16;
+constexpr std::uint64_t kEncoderCheckSeed = 1;
 
 std::int64_t ConvOutputLength(std::int64_t length, const ConvLayerSpec& layer) {
   return (length + 2 * layer.padding - layer.kernel_size) / layer.stride + 1;
@@ -81,6 +85,15 @@ std::vector<ConvLayerSpec> ParseConvStack(const std::string& spec) {
   return layers;
 }
 
+std::string ConvStackText(const std::vector<ConvLayerSpec>& layers) {
+  std::string text;
+  for (const ConvLayerSpec& layer : layers) {
+    text += fmt::format("{}{}:{}:{}:{}", text.empty() ? "" : ",", layer.out_channels,
+                        layer.kernel_size, layer.stride, layer.padding);
+  }
+  return text;
+}
+
 FeatureExtractorImpl::FeatureExtractorImpl(FeatureExtractorOptions options)
     : options_(std::move(options)) {
   perception_ = register_module("perception", torch::nn::ModuleList());
@@ -138,7 +151,9 @@ void FeatureExtractorImpl::LoadPretrainedEncoder() {
   for (std::size_t i = 0; i < target.size(); ++i) target[i].copy_(source[i]);
 
   // The copy relies on the VAE's layer order; check that it computes the VAE's mu.
-  const torch::Tensor scans = torch::rand({kEncoderCheckSamples, kNumRays});
+  const torch::Tensor scans =
+      torch::rand({kEncoderCheckSamples, kNumRays},
+                  at::make_generator<at::CPUGeneratorImpl>(kEncoderCheckSeed));
   const double difference = (Perception(scans) - encoder->Mu(scans)).abs().max().item<double>();
   if (!(difference < kEncoderCopyTolerance)) {
     throw std::logic_error("feature extractor does not reproduce the mu of " + file);

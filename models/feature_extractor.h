@@ -32,6 +32,8 @@ std::string ExtractorKindName(ExtractorKind kind);
 /// Parses a conv stack "out:kernel:stride:padding[,out:kernel:stride:padding...]" (input channels
 /// follow from the previous layer, the first takes 1). A malformed spec is a UserError.
 std::vector<ConvLayerSpec> ParseConvStack(const std::string& spec);
+/// The inverse of ParseConvStack.
+std::string ConvStackText(const std::vector<ConvLayerSpec>& layers);
 
 struct FeatureExtractorOptions {
   ExtractorKind kind = ExtractorKind::kBaseline;

@@ -4,9 +4,7 @@
 #include <string>
 
 #include "env/environment_spec.h"
-#include "models/torchscript_export.h"
-#include "src/atomic_file.h"
-#include "src/error.h"
+#include "models/torchscript_source.h"
 
 namespace colav {
 namespace {
@@ -14,16 +12,6 @@ namespace {
 constexpr char kObservationLayout[] =
     "obs[:, 0:6] = [u, v, r, cte/100, heading_error, look_ahead_heading_error]; "
     "obs[:, 6:186] = closeness 1 - d/150 of rays i = 0..179 at -pi + (i+1)*2 deg";
-
-std::string Self(const std::string& prefix, const std::string& parameter) {
-  return "self." + ScriptedParameterName(prefix + "." + parameter);
-}
-
-// `input @ W^T + b` for the Linear module registered under `prefix`.
-std::string LinearSource(const std::string& input, const std::string& prefix) {
-  return "torch.addmm(" + Self(prefix, "bias") + ", " + input + ", " + Self(prefix, "weight") +
-         ".t())";
-}
 
 std::string FeaturesSource(FeatureExtractorImpl& extractor) {
   std::ostringstream source;
@@ -34,13 +22,9 @@ std::string FeaturesSource(FeatureExtractorImpl& extractor) {
     const std::string prefix = "features_extractor.perception." + std::to_string(i);
     if (layer.conv) {
       const auto& options = layer.conv->options;
-      const std::int64_t padding = (*c10::get<torch::ExpandingArray<1>>(options.padding()))[0];
-      if (padding > 0) {  // circular: wrap `padding` columns from the opposite end
-        const std::string p = std::to_string(padding);
-        source << "    h = torch.cat([h[:, :, -" << p << ":], h, h[:, :, :" << p << "]], 2)\n";
-      }
-      source << "    h = torch.conv1d(h, " << Self(prefix, "weight") << ", " << Self(prefix, "bias")
-             << ", [" << (*options.stride())[0] << "])\n";
+      source << CircularConv1dSource(prefix,
+                                     (*c10::get<torch::ExpandingArray<1>>(options.padding()))[0],
+                                     (*options.stride())[0]);
     } else {
       source << "    h = " << LinearSource("h.flatten(1)", prefix) << "\n";
     }
@@ -66,10 +50,7 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
 
 torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step) {
   torch::jit::Module script("__torch__.colav.PpoPolicy");
-  for (const auto& parameter : model.named_parameters()) {
-    script.register_parameter(ScriptedParameterName(parameter.key()),
-                              parameter.value().detach().clone(), /*is_buffer=*/false);
-  }
+  RegisterParameters(model, script);
   const FeatureExtractorOptions& extractor = model.options().extractor;
   script.register_attribute("extractor", c10::StringType::get(), ExtractorKindName(extractor.kind));
   script.register_attribute("locked", c10::BoolType::get(),
@@ -91,14 +72,7 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
 
 void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
                   const std::filesystem::path& path) {
-  const torch::jit::Module script = ScriptPolicy(model, global_step);
-  WriteFileAtomically(path, [&](const std::filesystem::path& temporary_path) {
-    try {
-      script.save(temporary_path.string());
-    } catch (const c10::Error&) {
-      throw UserError("cannot write TorchScript file '" + path.string() + "'");
-    }
-  });
+  SaveScript(ScriptPolicy(model, global_step), path);
 }
 
 }  // namespace colav

@@ -4,8 +4,8 @@
 #include <vector>
 
 #include "models/cptc.h"
+#include "models/torchscript_source.h"
 #include "models/vae_architecture.h"
-#include "src/atomic_file.h"
 #include "src/error.h"
 
 namespace colav {
@@ -19,40 +19,27 @@ std::string DecoderPaddingName(DecoderPadding padding) {
   return padding == DecoderPadding::kCircular ? "circular" : "zero";
 }
 
-// Statements that wrap the length axis of `h` by `width` columns from the opposite end.
-std::string WrapSource(std::int64_t width) {
-  if (width == 0) return "";
-  const std::string w = std::to_string(width);
-  return "    h = torch.cat([h[:, :, -" + w + ":], h, h[:, :, :" + w + "]], 2)\n";
-}
-
 // Statements taking x [B, 180] to the flattened conv features h [B, 12], each circular Conv1d as
-// a wrap followed by an unpadded conv1d; `prefix` is the scripted name of the encoder module's
-// parameters ("" or "encoder_").
+// a wrap followed by an unpadded conv1d; `prefix` is the encoder module's name with its dot ("" or
+// "encoder.").
 std::string EncoderFeaturesSource(VaeArchitecture architecture, const std::string& prefix) {
   const std::vector<ConvLayerSpec> layers = EncoderConvLayers(architecture);
   std::ostringstream source;
   source << "    h = x.unsqueeze(1)\n";
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    const std::string parameter = "self." + prefix + "convs_" + std::to_string(i) + "_";
-    source << WrapSource(layers[i].padding) << "    h = torch.conv1d(h, " << parameter << "weight, "
-           << parameter << "bias, [" << layers[i].stride << "])\n";
+    source << CircularConv1dSource(prefix + "convs." + std::to_string(i), layers[i].padding,
+                                   layers[i].stride);
     if (i + 1 < layers.size()) source << "    h = torch.relu(h)\n";
   }
   source << "    h = h.flatten(1)\n";
   return source.str();
 }
 
-// The scripted Linear layer `layer` (its parameters `<layer>_weight`, `<layer>_bias`) on `input`.
-std::string LinearSource(const std::string& input, const std::string& layer) {
-  return "torch.addmm(self." + layer + "_bias, " + input + ", self." + layer + "_weight.t())";
-}
-
 std::string DecoderSource(const VaeDecoderOptions& options) {
   const std::vector<ConvLayerSpec> layers = DecoderConvLayers(options.architecture);
   std::ostringstream source;
   source << "def decode(self, z: Tensor) -> Tensor:\n"
-         << "    h = torch.relu(" << LinearSource("z", "decoder_fc") << ").unsqueeze(1)\n";
+         << "    h = torch.relu(" << LinearSource("z", "decoder.fc") << ").unsqueeze(1)\n";
   for (std::size_t i = 0; i < layers.size(); ++i) {
     const ConvLayerSpec& layer = layers[i];
     std::int64_t padding = layer.padding;
@@ -63,33 +50,11 @@ std::string DecoderSource(const VaeDecoderOptions& options) {
       source << WrapSource(wrap_width);
       padding += wrap_width * layer.stride;
     }
-    const std::string parameter = "self.decoder_deconvs_" + std::to_string(i) + "_";
-    source << "    h = torch.conv_transpose1d(h, " << parameter << "weight, " << parameter
-           << "bias, [" << layer.stride << "], [" << padding << "])\n";
+    source << ConvTranspose1dSource("decoder.deconvs." + std::to_string(i), layer.stride, padding);
     if (i + 1 < layers.size()) source << "    h = torch.relu(h)\n";
   }
   source << "    return torch.sigmoid(h.flatten(1))\n";
   return source.str();
-}
-
-// Copies every parameter of `module` into `script` as a float32 CPU tensor.
-void RegisterParameters(const torch::nn::Module& module, torch::jit::Module& script) {
-  for (const auto& parameter : module.named_parameters()) {
-    script.register_parameter(ScriptedParameterName(parameter.key()),
-                              parameter.value().detach().to(torch::kCPU, torch::kFloat32,
-                                                            /*non_blocking=*/false, /*copy=*/true),
-                              /*is_buffer=*/false);
-  }
-}
-
-void Save(const torch::jit::Module& script, const std::filesystem::path& path) {
-  WriteFileAtomically(path, [&](const std::filesystem::path& temporary_path) {
-    try {
-      script.save(temporary_path.string());
-    } catch (const c10::Error&) {
-      throw UserError("cannot write TorchScript file '" + path.string() + "'");
-    }
-  });
 }
 
 torch::jit::IValue RequireAttribute(const torch::jit::Module& script, const std::string& name,
@@ -121,14 +86,6 @@ torch::Tensor StoredParameter(const torch::jit::Module& script, const std::strin
 
 }  // namespace
 
-std::string ScriptedParameterName(const std::string& name) {
-  std::string scripted = name;
-  for (char& c : scripted) {
-    if (c == '.') c = '_';
-  }
-  return scripted;
-}
-
 torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder) {
   const VaeEncoderOptions& options = encoder.options();
   torch::jit::Module script("__torch__.colav.VaeEncoder");
@@ -152,8 +109,8 @@ torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
   script.register_attribute(kDecoderPaddingAttribute, c10::StringType::get(),
                             DecoderPaddingName(options.decoder_padding));
   script.define("def encode(self, x: Tensor) -> Tuple[Tensor, Tensor]:\n" +
-                EncoderFeaturesSource(options.architecture, "encoder_") + "    return " +
-                LinearSource("h", "encoder_fc_mu") + ", " + LinearSource("h", "encoder_fc_logvar") +
+                EncoderFeaturesSource(options.architecture, "encoder.") + "    return " +
+                LinearSource("h", "encoder.fc_mu") + ", " + LinearSource("h", "encoder.fc_logvar") +
                 "\n" + DecoderSource(vae.decoder()->options()) +
                 "def forward(self, x: Tensor) -> Tuple[Tensor, Tensor, Tensor]:\n"
                 "    mu, logvar = self.encode(x)\n"
@@ -163,11 +120,11 @@ torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
 }
 
 void ExportEncoder(const VaeEncoder& encoder, const std::filesystem::path& path) {
-  Save(ScriptEncoder(*encoder), path);
+  SaveScript(ScriptEncoder(*encoder), path);
 }
 
 void ExportVae(const ConvVae& vae, const std::filesystem::path& path) {
-  Save(ScriptVae(*vae), path);
+  SaveScript(ScriptVae(*vae), path);
 }
 
 VaeEncoder LoadVaeEncoder(const std::filesystem::path& path) {

@@ -9,7 +9,7 @@
 //               sampling z = mu + eps * exp(logvar / 2) with eps = torch.randn_like(mu); also
 //               encode(x) -> (mu, logvar) and decode(z) -> reconstruction; attributes
 //               `architecture`, `latent_dims` and `decoder_padding` (str, "circular" | "zero").
-// A parameter `a.b.c` of the C++ module is the attribute `a_b_c` of the scripted one.
+// Parameters are named as models/torchscript_source.h says.
 #pragma once
 
 #include <torch/script.h>
@@ -28,8 +28,7 @@ namespace colav {
 torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder);
 torch::jit::Module ScriptVae(const ConvVaeImpl& vae);
 
-// Write the scripted module to `path` through WriteFileAtomically (parent folders created, no
-// half-written file on failure). A path that cannot be written is a UserError naming it.
+// Write the scripted module to `path` (SaveScript, models/torchscript_source.h).
 void ExportEncoder(const VaeEncoder& encoder, const std::filesystem::path& path);
 void ExportVae(const ConvVae& vae, const std::filesystem::path& path);
 
@@ -37,8 +36,5 @@ void ExportVae(const ConvVae& vae, const std::filesystem::path& path);
 // not TorchScript, a missing or malformed attribute or parameter, or a parameter whose shape does
 // not fit `architecture` and `latent_dims` is a UserError naming the file.
 VaeEncoder LoadVaeEncoder(const std::filesystem::path& path);
-
-// The scripted name of a C++ parameter name: "fc_mu.weight" -> "fc_mu_weight".
-std::string ScriptedParameterName(const std::string& name);
 
 }  // namespace colav

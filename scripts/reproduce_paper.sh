@@ -329,7 +329,7 @@ for arch in ("shallow", "deep"):
     if exists(f"vae/{arch}/summary.json"):
         s = load(f"vae/{arch}/summary.json")
         e = s["test_error"]
-        vae_rows.append(f"| {s['model']} | {e['mean']:.2f} [{e['ci95_low']:.2f}, {e['ci95_high']:.2f}] "
+        vae_rows.append(f"| {s['model']} | {e['mean']:.2f} [{e['low']:.2f}, {e['high']:.2f}] "
                         f"| {e['sd']:.3f} | {e['n']} | {s['seconds_per_seed']['mean']:.0f} s "
                         f"| {paper_vae[arch]} |")
 if vae_rows:

@@ -92,8 +92,18 @@ ConfigFlags::ConfigFlags(CLI::App& app, const ConfigSchema& schema)
   set_option_->type_name("KEY=VALUE")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  app.footer(app.get_footer() + "\nConfiguration keys (KEY = DEFAULT (TYPE) DOC):\n" +
-             schema_.Describe());
+  if (!schema_.entries().empty()) {
+    app.footer(app.get_footer() + "\nConfiguration keys (KEY = DEFAULT (TYPE) DOC):\n" +
+               schema_.Describe());
+  }
+  // A callback, because callbacks run before CLI11 checks required options.
+  app.add_flag_callback(
+      "--print-config",
+      [this] {
+        std::cout << ConfigYamlFile(Resolve());
+        throw CLI::Success();
+      },
+      "print the resolved configuration (defaults, --config, --set, flags) as YAML and exit");
 }
 
 CLI::Option* ConfigFlags::AddFlag(const std::string& flag, const std::string& key) {
@@ -136,6 +146,11 @@ Config ConfigFlags::Resolve() const {
     config.Set(shortcut->key, value, option->get_name());
   }
   return config;
+}
+
+std::string ConfigYamlFile(const Config& config) {
+  return "# " + ProgramName() + " configuration (" + ProgramName() +
+         " --print-config); read with --config FILE.yaml.\n" + config.ToDocumentedYaml();
 }
 
 StopFlag::StopFlag() {

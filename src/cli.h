@@ -1,13 +1,15 @@
 // Command-line plumbing shared by every program: uniform error reporting and exit codes, the
-// common --config / --set flags resolved into a Config, and clean stopping on Ctrl-C.
+// common --config / --set / --print-config flags resolved into a Config, and clean stopping on
+// Ctrl-C. A program turns the Config into its typed options once, in main (OptionsBinding):
 //
 //   int main(int argc, char** argv) {
 //     return colav::RunProgram("train_ppo", argc, argv, [](int argc, char** argv) {
 //       CLI::App app{"Trains the PPO agent."};
-//       colav::ConfigFlags config_flags(app, TrainPpoSchema());
+//       const colav::OptionsBinding<colav::PpoRunOptions> binding = colav::PpoRunBinding();
+//       colav::ConfigFlags config_flags(app, binding.Schema());
 //       config_flags.AddFlag("--steps", "ppo.total_steps");
 //       colav::ParseCommandLine(app, argc, argv);
-//       const colav::Config config = config_flags.Resolve();
+//       const colav::PpoRunOptions options = binding.Read(config_flags.Resolve());
 //       ...
 //     });
 //   }
@@ -43,12 +45,16 @@ const std::string& ProgramName();
 /// RunProgram turns into exit status 0; a bad command line throws CLI::ParseError.
 void ParseCommandLine(CLI::App& app, int argc, char** argv);
 
-/// The flags that feed a Config: --config FILE.yaml, repeatable --set key=value, and shortcut
-/// flags for single keys. `app` must outlive this object.
+/// The flags that feed a Config: --config FILE.yaml, repeatable --set key=value, shortcut flags
+/// for single keys, and --print-config. `app` must outlive this object.
 class ConfigFlags {
  public:
-  /// Adds --config and --set to `app`, and the schema's keys to its help.
+  /// Adds --config, --set and --print-config to `app`, and the schema's keys to its help.
+  /// --print-config prints the resolved configuration (ConfigYamlFile) and ends the program with
+  /// status 0 while parsing, before required options are checked.
   ConfigFlags(CLI::App& app, const ConfigSchema& schema);
+  ConfigFlags(const ConfigFlags&) = delete;
+  ConfigFlags& operator=(const ConfigFlags&) = delete;
 
   /// Adds `flag VALUE` (e.g. "--steps") meaning --set key=VALUE, documented by the key's doc.
   CLI::Option* AddFlag(const std::string& flag, const std::string& key);
@@ -73,6 +79,10 @@ class ConfigFlags {
   CLI::Option* set_option_;
   std::vector<Shortcut> shortcuts_;
 };
+
+/// The configuration as a file for --config: a comment naming the running program, then
+/// Config::ToDocumentedYaml. configs/<program>.yaml holds each program's defaults in this form.
+std::string ConfigYamlFile(const Config& config);
 
 /// Turns SIGINT and SIGTERM into a request to stop, so that a training loop can checkpoint and
 /// exit cleanly; a second signal ends the program at once. Installs the handlers for its lifetime

@@ -238,20 +238,28 @@ Json NestedValues(const ConfigSchema& schema, const std::map<std::string, Config
   return nested;
 }
 
-void EmitYaml(YAML::Emitter& out, const nlohmann::ordered_json& node) {
+// Emits `node`, the nested values under the dotted `prefix`; with a schema, each value is followed
+// by its key's doc as a comment.
+void EmitYaml(YAML::Emitter& out, const nlohmann::ordered_json& node,
+              const ConfigSchema* documenting = nullptr, const std::string& prefix = "") {
   if (node.is_object()) {
     out << YAML::BeginMap;
     for (const auto& item : node.items()) {
       out << YAML::Key << item.key() << YAML::Value;
-      EmitYaml(out, item.value());
+      EmitYaml(out, item.value(), documenting, prefix + item.key() + ".");
     }
     out << YAML::EndMap;
-  } else if (node.is_string()) {
+    return;
+  }
+  if (node.is_string()) {
     out << YAML::DoubleQuoted << node.get<std::string>();  // "true" or "3" stay strings
   } else if (node.is_number_float()) {
     out << FormatDouble(node.get<double>());
   } else {
     out << node.dump();  // integers and booleans are spelled the same in JSON and YAML
+  }
+  if (documenting != nullptr) {
+    out << YAML::Comment(documenting->Find(prefix.substr(0, prefix.size() - 1))->doc);
   }
 }
 
@@ -378,13 +386,17 @@ void Config::ApplyOverride(const std::string& assignment, const std::string& ori
 }
 
 const ConfigValue& Config::Get(const std::string& key, std::size_t type_index) const {
-  const Entry* entry = schema_.Find(key);
-  if (entry == nullptr) throw std::invalid_argument("Config: undeclared key '" + key + "'");
-  const std::size_t declared = entry->default_value.index();
-  if (declared != type_index) {
-    throw std::invalid_argument("Config: key '" + key + "' is a " + TypeName(declared) +
+  const ConfigValue& value = Value(key);
+  if (value.index() != type_index) {
+    throw std::invalid_argument("Config: key '" + key + "' is a " + TypeName(value.index()) +
                                 ", not a " + TypeName(type_index));
   }
+  return value;
+}
+
+const ConfigValue& Config::Value(const std::string& key) const {
+  const Entry* entry = schema_.Find(key);
+  if (entry == nullptr) throw std::invalid_argument("Config: undeclared key '" + key + "'");
   return values_.at(key);
 }
 
@@ -405,6 +417,13 @@ std::string Config::GetString(const std::string& key) const {
 std::string Config::ToYaml() const {
   YAML::Emitter out;
   EmitYaml(out, NestedValues<nlohmann::ordered_json>(schema_, values_));
+  return std::string(out.c_str()) + "\n";
+}
+
+std::string Config::ToDocumentedYaml() const {
+  if (schema_.entries().empty()) return "";
+  YAML::Emitter out;
+  EmitYaml(out, NestedValues<nlohmann::ordered_json>(schema_, values_), &schema_);
   return std::string(out.c_str()) + "\n";
 }
 

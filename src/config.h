@@ -40,6 +40,8 @@ class ConfigSchema {
   ConfigSchema& AddBool(const std::string& key, bool default_value, const std::string& doc);
   ConfigSchema& AddString(const std::string& key, const std::string& default_value,
                           const std::string& doc, std::vector<std::string> choices = {});
+  /// Declares a whole entry (its default's alternative is the key's type).
+  ConfigSchema& Add(Entry entry);
 
   /// The entry of `key`, or nullptr when the key is not declared.
   const Entry* Find(const std::string& key) const;
@@ -49,8 +51,6 @@ class ConfigSchema {
   std::string Describe() const;
 
  private:
-  ConfigSchema& Add(Entry entry);
-
   std::vector<Entry> entries_;
   std::map<std::string, std::size_t> index_;  // key -> position in entries_
 };
@@ -75,9 +75,14 @@ class Config {
   std::int64_t GetInt(const std::string& key) const;
   bool GetBool(const std::string& key) const;
   std::string GetString(const std::string& key) const;
+  /// The value of `key`, of its declared type.
+  const ConfigValue& Value(const std::string& key) const;
 
   /// Nested YAML of all resolved values, in schema order (for the run folder).
   std::string ToYaml() const;
+  /// ToYaml with each key's doc as a comment after its value; "" without keys (--print-config,
+  /// configs/*.yaml).
+  std::string ToDocumentedYaml() const;
   /// Nested JSON object of all resolved values.
   nlohmann::json ToJson() const;
 

@@ -4,6 +4,7 @@
 // log files) a plain line is printed every few seconds, so logs stay readable.
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <iosfwd>
@@ -28,6 +29,10 @@ struct ProgressState {
 
 /// "MM:SS", or "H:MM:SS" from an hour on; "--:--" for negative or non-finite durations.
 std::string FormatDuration(double seconds);
+/// `value` with `digits` digits after the point (printf's "%.*f").
+std::string Fixed(double value, int digits);
+/// Seconds from `start` to now.
+double SecondsSince(std::chrono::steady_clock::time_point start);
 /// "0.52 steps/s", "812 steps/s", "12.3k steps/s", "4.5M steps/s".
 std::string FormatRate(double per_second, const std::string& unit);
 /// The progress line: label, bar (if bar_width > 0 and the total is known), count, percentage,

@@ -104,4 +104,20 @@ MeanConfidenceInterval Summarise(const std::vector<double>& values, double level
   return summary;
 }
 
+nlohmann::ordered_json ConfidenceIntervalJson(const MeanConfidenceInterval& interval) {
+  return {{"n", interval.count}, {"mean", interval.mean}, {"sd", interval.sd},
+          {"low", interval.low}, {"high", interval.high}, {"half_width", interval.half_width}};
+}
+
+MeanConfidenceInterval ConfidenceIntervalFromJson(const nlohmann::json& json) {
+  MeanConfidenceInterval interval;
+  interval.count = json.at("n").get<std::size_t>();
+  interval.mean = json.at("mean").get<double>();
+  interval.sd = json.at("sd").get<double>();
+  interval.low = json.at("low").get<double>();
+  interval.high = json.at("high").get<double>();
+  interval.half_width = json.at("half_width").get<double>();
+  return interval;
+}
+
 }  // namespace colav

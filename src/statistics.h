@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace colav {
@@ -29,5 +30,10 @@ struct MeanConfidenceInterval {
 
 /// The summary of `values` (not empty; std::invalid_argument otherwise).
 MeanConfidenceInterval Summarise(const std::vector<double>& values, double level = 0.95);
+
+/// `interval` as the JSON object {n, mean, sd, low, high, half_width}, in this order.
+nlohmann::ordered_json ConfidenceIntervalJson(const MeanConfidenceInterval& interval);
+/// The inverse of ConfidenceIntervalJson (nlohmann::json::exception for a missing field).
+MeanConfidenceInterval ConfidenceIntervalFromJson(const nlohmann::json& json);
 
 }  // namespace colav

@@ -7,10 +7,13 @@
 #include <fcl/broadphase/default_broadphase_callbacks.h>
 #include <fcl/narrowphase/collision_object.h>
 
+#include <CLI/CLI.hpp>
+
 #include "env/collision_checker.h"
 #include "env/fcl_shapes.h"
 #include "env/training_scenario.h"
 #include "env/vessel_model.h"
+#include "src/cli.h"
 
 namespace colav {
 namespace {
@@ -69,4 +72,20 @@ BENCHMARK(BM_DynamicAabbTreeManager);
 }  // namespace
 }  // namespace colav
 
-BENCHMARK_MAIN();
+// Google Benchmark's main, inside RunProgram and with ConfigFlags so that bench_collision answers
+// --print-config (it has no configuration keys) like every program. Google Benchmark reads the
+// other arguments, --help included.
+int main(int argc, char** argv) {
+  return colav::RunProgram("bench_collision", argc, argv, [](int argc, char** argv) {
+    CLI::App app{"Compares FCL collision strategies (Google Benchmark)."};
+    app.allow_extras();
+    app.set_help_flag();
+    const colav::ConfigFlags config_flags(app, colav::ConfigSchema());
+    colav::ParseCommandLine(app, argc, argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    return 0;
+  });
+}

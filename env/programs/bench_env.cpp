@@ -4,13 +4,13 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
-#include <thread>
 
 #include "env/batched_environment.h"
 #include "env/environment.h"
 #include "env/training_scenario.h"
 #include "src/cli.h"
 #include "src/random.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 namespace {
@@ -68,13 +68,14 @@ int BenchEnv(int argc, char** argv) {
   CLI::App app{"Measures environment steps per second (training environment of the paper)."};
   double seconds = 3.0;
   int num_envs = 8;
-  int num_threads = static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  int num_threads = ThreadCountOrAllCores(0);
   std::uint64_t seed = 1;
   app.add_option("--seconds", seconds, "measuring time per case")->check(CLI::PositiveNumber);
   app.add_option("--envs", num_envs, "worlds in the batched case")->check(CLI::PositiveNumber);
   app.add_option("--threads", num_threads, "threads in the batched case (default: all cores)")
       ->check(CLI::PositiveNumber);
   app.add_option("--seed", seed, "seed of the worlds and actions");
+  const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
 
   const double fixed = SingleEnvironment(seconds, false, seed);

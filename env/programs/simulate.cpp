@@ -16,12 +16,6 @@
 namespace colav {
 namespace {
 
-ConfigSchema SimulateSchema() {
-  ConfigSchema schema;
-  AddEnvironmentKeys(schema);
-  return schema;
-}
-
 int Simulate(int argc, char** argv) {
   CLI::App app{
       "Replays a scenario file under a given action sequence and writes a per-step trace:\n"
@@ -45,9 +39,10 @@ int Simulate(int argc, char** argv) {
       ->required();
   app.add_option("--out", trace_path, "trace file to write (CSV)")->required();
   app.add_option("--plot", plot_path, "also draw the scene and the track to this PNG");
-  const ConfigFlags config_flags(app, SimulateSchema());
+  const OptionsBinding<EnvironmentConfig> binding = EnvironmentBinding();
+  const ConfigFlags config_flags(app, binding.Schema());
   ParseCommandLine(app, argc, argv);
-  const Config config = config_flags.Resolve();
+  const EnvironmentConfig env_config = binding.Read(config_flags.Resolve());
 
   if (scenario_path.empty() && seed_option->count() == 0) {
     throw UserError("give a scenario: --scenario FILE.yaml or --training-seed S");
@@ -59,7 +54,7 @@ int Simulate(int argc, char** argv) {
     WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
   }
   const auto actions = LoadActionsFile(actions_path);
-  Environment env(EnvironmentConfigFrom(config), std::make_shared<FixedScenarioSource>(scenario));
+  Environment env(env_config, std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
   env.Reset(0, observation.data());
   std::string trace = TraceHeader() + "\n" + TraceRow(0, env.world(), StepResult{}) + "\n";

@@ -6,8 +6,6 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
-#include <thread>
-#include <variant>
 
 #include "env/environment_config.h"
 #include "eval/episode_runner.h"
@@ -23,47 +21,39 @@
 #include "src/logging.h"
 #include "src/progress.h"
 #include "src/run_folder.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 namespace {
 
-// Re-declares `entry` in `schema` (with its type, range and choices).
-void Declare(ConfigSchema& schema, const ConfigSchema::Entry& entry) {
-  std::visit(
-      [&](const auto& value) {
-        using T = std::decay_t<decltype(value)>;
-        if constexpr (std::is_same_v<T, double>) {
-          schema.AddDouble(entry.key, value, entry.doc, entry.min_double, entry.max_double);
-        } else if constexpr (std::is_same_v<T, std::int64_t>) {
-          schema.AddInt(entry.key, value, entry.doc, entry.min_int, entry.max_int);
-        } else if constexpr (std::is_same_v<T, bool>) {
-          schema.AddBool(entry.key, value, entry.doc);
-        } else {
-          schema.AddString(entry.key, value, entry.doc, entry.choices);
-        }
-      },
-      entry.default_value);
-}
+struct EvaluateOptions {
+  EnvironmentConfig env;
+  int episodes = 100;
+  std::uint64_t seed = 0;
+  int threads = 0;  ///< 0: all cores
+  int trajectory_scenarios = 3;
+  int trajectory_starts = 5;
+};
 
-ConfigSchema EvaluateSchema() {
-  ConfigSchema environment;
-  AddEnvironmentKeys(environment);
-  ConfigSchema schema;
-  // The environment's keys, but in test mode by default: evaluation follows the reference test
-  // procedure, which has no cumulative-reward floor.
-  for (ConfigSchema::Entry entry : environment.entries()) {
-    if (entry.key == "env.test_mode") entry.default_value = true;
-    Declare(schema, entry);
-  }
-  schema.AddInt("eval.episodes", 100, "number of test scenarios", 1, 100000)
-      .AddInt("eval.seed", 0, "master seed of the test scenarios (shared by every model)", 0)
-      .AddInt("eval.threads", 0, "threads stepping the episodes (0 = all cores)", 0, 256)
-      .AddInt("eval.trajectory_scenarios", 3,
+OptionsBinding<EvaluateOptions> EvaluateBinding() {
+  using Options = EvaluateOptions;
+  // The environment in test mode by default: evaluation follows the reference test procedure,
+  // which has no cumulative-reward floor.
+  Options defaults;
+  defaults.env.test_mode = true;
+  OptionsBinding<Options> binding(defaults);
+  binding.Include(EnvironmentBinding(), &Options::env)
+      .Number("eval.episodes", &Options::episodes, "number of test scenarios", 1, 100000)
+      .Number("eval.seed", &Options::seed,
+              "master seed of the test scenarios (shared by every model)", 0)
+      .Number("eval.threads", &Options::threads, "threads stepping the episodes (0 = all cores)", 0,
+              256)
+      .Number("eval.trajectory_scenarios", &Options::trajectory_scenarios,
               "test scenarios drawn as trajectory figures (the first ones)", 0, 100000)
-      .AddInt("eval.trajectory_starts", 5,
+      .Number("eval.trajectory_starts", &Options::trajectory_starts,
               "runs per model in each trajectory figure: the test start plus perturbed starts", 1,
               100);
-  return schema;
+  return binding;
 }
 
 std::vector<Policy> LoadPolicies(const std::vector<std::string>& paths,
@@ -126,12 +116,12 @@ void PlotScenarioFileRuns(const std::vector<Policy>& policies,
 void PlotTestTrajectories(std::vector<Policy>& policies,
                           const std::vector<EvaluationEpisode>& episodes,
                           const std::vector<std::vector<EpisodeOutcome>>& outcomes,
-                          const Config& config, const EnvironmentConfig& env_config, int threads,
+                          const EvaluateOptions& options, int threads,
                           const std::filesystem::path& out) {
-  const int pictured = std::min<int>(static_cast<int>(config.GetInt("eval.trajectory_scenarios")),
-                                     static_cast<int>(episodes.size()));
-  const int starts = static_cast<int>(config.GetInt("eval.trajectory_starts"));
-  const std::uint64_t seed = static_cast<std::uint64_t>(config.GetInt("eval.seed"));
+  const int pictured =
+      std::min<int>(options.trajectory_scenarios, static_cast<int>(episodes.size()));
+  const int starts = options.trajectory_starts;
+  const std::uint64_t seed = options.seed;
   std::vector<EvaluationEpisode> perturbed;  // scenario e's start s at e * (starts - 1) + s - 1
   for (int e = 0; e < pictured; ++e) {
     for (int s = 1; s < starts; ++s) perturbed.push_back(WithPerturbedStart(episodes[e], seed, s));
@@ -140,7 +130,7 @@ void PlotTestTrajectories(std::vector<Policy>& policies,
   const auto perturbed_outcomes =
       perturbed.empty()
           ? std::vector<std::vector<EpisodeOutcome>>(policies.size())
-          : RunWithProgress(policies, perturbed, env_config, threads, "trajectory starts");
+          : RunWithProgress(policies, perturbed, options.env, threads, "trajectory starts");
   std::vector<std::string> labels = {"test start"};
   for (int s = 1; s < starts; ++s) labels.push_back("start " + std::to_string(s));
   for (int e = 0; e < pictured; ++e) {
@@ -172,7 +162,8 @@ int Evaluate(int argc, char** argv) {
   auto* scenario_option = app.add_option("--scenario", scenario_files,
                                          "evaluate on these scenario files instead, repeatable");
   app.add_option("--out", out, "output folder")->required();
-  ConfigFlags config_flags(app, EvaluateSchema());
+  const OptionsBinding<EvaluateOptions> binding = EvaluateBinding();
+  ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--episodes", "eval.episodes")->excludes(scenario_option);
   config_flags.AddFlag("--seed", "eval.seed");
   config_flags.AddFlag("--threads", "eval.threads");
@@ -180,29 +171,27 @@ int Evaluate(int argc, char** argv) {
   config_flags.AddFlag("--trajectory-starts", "eval.trajectory_starts");
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
+  const EvaluateOptions options = binding.Read(config);
 
   const auto start = std::chrono::steady_clock::now();
-  const int threads = config.GetInt("eval.threads") > 0
-                          ? static_cast<int>(config.GetInt("eval.threads"))
-                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
+  const int threads = ThreadCountOrAllCores(options.threads);
   // The policies' matrices are small: the episodes run in parallel instead, and LibTorch's
   // OpenMP threads would only spin against the episode threads (30x slower on 2 busy cores).
   at::set_num_threads(1);
-  const EnvironmentConfig env_config = EnvironmentConfigFrom(config);
   // Every input is checked before the output folder is touched.
   std::vector<Policy> policies = LoadPolicies(policy_paths, names);
   const bool on_files = !scenario_files.empty();
-  const std::uint64_t seed = static_cast<std::uint64_t>(config.GetInt("eval.seed"));
+  const std::uint64_t seed = options.seed;
   const std::vector<EvaluationEpisode> episodes =
       on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
-               : TestEpisodes(seed, static_cast<int>(config.GetInt("eval.episodes")));
+               : TestEpisodes(seed, options.episodes);
   const RunFolder folder = RunFolder::Create(out, "evaluate");
   InitLogging("evaluate", folder.LogPath(), false);
   folder.WriteResolvedConfig(config);
   spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),
                on_files ? "scenario files" : "test scenarios");
 
-  const auto outcomes = RunWithProgress(policies, episodes, env_config, threads, "evaluate");
+  const auto outcomes = RunWithProgress(policies, episodes, options.env, threads, "evaluate");
   const double evaluation_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<std::string> model_names;
@@ -225,7 +214,7 @@ int Evaluate(int argc, char** argv) {
   if (on_files) {
     PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());
   } else {
-    PlotTestTrajectories(policies, episodes, outcomes, config, env_config, threads, folder.path());
+    PlotTestTrajectories(policies, episodes, outcomes, options, threads, folder.path());
   }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -52,6 +52,7 @@ int PlotBetaSweepProgram(int argc, char** argv) {
   app.add_option("--out", out, "PNG to write")->required();
   app.add_option("--table", table, "also write the Markdown table here");
   app.add_option("--title", title, "figure title");
+  const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
 
   std::vector<ModelSummary> models;

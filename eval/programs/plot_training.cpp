@@ -27,6 +27,7 @@ int PlotTraining(int argc, char** argv) {
   app.add_option("--out", out, "PNG to write")->required();
   app.add_option("--title", title, "figure title");
   app.add_option("--window", window, "episodes in the rolling window")->check(CLI::PositiveNumber);
+  const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
 
   std::vector<TrainingRun> runs;

@@ -1,20 +1,22 @@
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
 
-#include <cstdio>
+#include <cstdlib>
 #include <fstream>
-#include <sstream>
+#include <string>
 
 #include "src/atomic_file.h"
 #include "src/error.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
 
-std::string ShellQuote(const std::string& text) {
+// `text` in single quotes, each single quote in it written as `escaped_quote`.
+std::string SingleQuote(const std::string& text, const std::string& escaped_quote) {
   std::string quoted = "'";
   for (const char c : text) {
     if (c == '\'') {
-      quoted += "'\\''";
+      quoted += escaped_quote;
     } else {
       quoted += c;
     }
@@ -22,18 +24,19 @@ std::string ShellQuote(const std::string& text) {
   return quoted + "'";
 }
 
+std::string ShellQuote(const std::string& text) { return SingleQuote(text, "'\\''"); }
+
 }  // namespace
 
-std::string GnuplotQuote(const std::string& text) {
-  std::string quoted = "'";
+std::string GnuplotQuote(const std::string& text) { return SingleQuote(text, "''"); }
+
+std::string GnuplotEnhancedText(const std::string& text) {
+  std::string escaped;
   for (const char c : text) {
-    if (c == '\'') {
-      quoted += "''";
-    } else {
-      quoted += c;
-    }
+    if (std::string("_^@&~{}\\").find(c) != std::string::npos) escaped += '\\';
+    escaped += c;
   }
-  return quoted + "'";
+  return escaped;
 }
 
 void RenderGnuplotPng(const std::string& script, const std::filesystem::path& png, int width,
@@ -43,8 +46,9 @@ void RenderGnuplotPng(const std::string& script, const std::filesystem::path& pn
     const std::filesystem::path log_path = temporary.string() + ".log";
     {
       std::ofstream out(script_path);
-      out << "set terminal pngcairo size " << width << "," << height
-          << " enhanced font 'Sans,10'\nset output " << GnuplotQuote(temporary.string()) << "\n"
+      out << "set terminal pngcairo size " << width << "," << height << " enhanced font "
+          << GnuplotQuote(kFigureFont) << "\nset output " << GnuplotQuote(temporary.string())
+          << "\n"
           << script << "\nset output\n";
     }
     const std::string command =

@@ -3,9 +3,9 @@
 #include <gtest/gtest.h>
 
 #include "eval/beta_sweep_figure.h"
-#include "eval/csv_table.h"
 #include "eval/rolling_statistics.h"
 #include "eval/training_curves.h"
+#include "src/csv_table.h"
 #include "tests/src/test_util.h"
 
 namespace colav {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "models/diagonal_gaussian.h"
+#include "tests/models/diagonal_gaussian.h"
 
 namespace colav {
 namespace {

@@ -1,19 +1,61 @@
 #include "models/conv_vae.h"
 
+#include <ATen/CPUGeneratorImpl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "models/circular_conv.h"
 #include "models/vae_architecture.h"
 #include "models/vae_loss.h"
 #include "src/error.h"
 
 namespace colav {
 namespace {
+
+// The weights LibTorch's own initialisers draw from the global generator, for
+// ResetConvolutionParameters to match with an explicit one.
+TEST(ResetConvolutionParametersTest, DrawsWhatTorchNnInitDrawsFromTheSameState) {
+  for (const std::vector<std::int64_t>& shape :
+       std::vector<std::vector<std::int64_t>>{{12, 180}, {16, 1, 5}, {8, 4, 3}}) {
+    torch::manual_seed(7);
+    torch::Tensor expected_weight = torch::empty(shape);
+    torch::Tensor expected_bias = torch::empty({shape[0]});
+    torch::nn::init::kaiming_uniform_(expected_weight, std::sqrt(5.0));
+    const double bound = 1.0 / std::sqrt(static_cast<double>(expected_weight[0].numel()));
+    torch::nn::init::uniform_(expected_bias, -bound, bound);
+
+    torch::Tensor weight = torch::empty(shape);
+    torch::Tensor bias = torch::empty({shape[0]});
+    ResetConvolutionParameters(weight, bias, at::make_generator<at::CPUGeneratorImpl>(7));
+    EXPECT_TRUE(torch::equal(weight, expected_weight)) << torch::IntArrayRef(shape);
+    EXPECT_TRUE(torch::equal(bias, expected_bias)) << torch::IntArrayRef(shape);
+  }
+}
+
+TEST(RedrawLayerParametersTest, GivesTheWeightsTheConstructorsDrawFromTheSeededGlobalGenerator) {
+  for (const VaeArchitecture architecture : {VaeArchitecture::kShallow, VaeArchitecture::kDeep}) {
+    for (const DecoderPadding padding : {DecoderPadding::kCircular, DecoderPadding::kZero}) {
+      const VaeOptions options{architecture, 12, padding};
+      torch::manual_seed(11);
+      const ConvVae expected(options);
+      ConvVae vae(options);
+      torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(11);
+      RedrawLayerParameters(*vae, generator);
+      const std::vector<torch::Tensor> expected_parameters = expected->parameters();
+      const std::vector<torch::Tensor> parameters = vae->parameters();
+      ASSERT_EQ(parameters.size(), expected_parameters.size());
+      for (std::size_t i = 0; i < parameters.size(); ++i) {
+        EXPECT_TRUE(torch::equal(parameters[i], expected_parameters[i])) << i;
+      }
+    }
+  }
+}
 
 std::int64_t ParameterCount(const torch::nn::Module& module) {
   std::int64_t count = 0;
@@ -120,7 +162,7 @@ TEST(ConvVae, ForwardShapesAndRangeForBothArchitecturesAndLatentSizes) {
     for (std::int64_t latent_dims : {12, 2}) {
       for (DecoderPadding padding : {DecoderPadding::kCircular, DecoderPadding::kZero}) {
         ConvVae vae(VaeOptions{architecture, latent_dims, padding});
-        const ConvVaeImpl::Output output = vae(x);
+        const ConvVaeImpl::Output output = vae(x, at::make_generator<at::CPUGeneratorImpl>(1));
         const std::string name =
             VaeArchitectureName(architecture) + " latent " + std::to_string(latent_dims);
         EXPECT_EQ(output.reconstruction.sizes(), (std::vector<std::int64_t>{5, 180})) << name;
@@ -151,22 +193,13 @@ TEST(ConvVae, SamplesTheLatentFromTheGivenGenerator) {
   EXPECT_TRUE(torch::allclose(first.reconstruction, expected, 1e-6, 1e-7));
 }
 
-TEST(ConvVae, WithoutAGeneratorSamplesFromTheGlobalGenerator) {
-  ConvVae vae(VaeOptions{});
-  const torch::Tensor x = torch::rand({4, 180});
-  torch::manual_seed(9);
-  const torch::Tensor first = vae(x).reconstruction;
-  torch::manual_seed(9);
-  EXPECT_TRUE(torch::equal(vae(x).reconstruction, first));
-}
-
 // Every parameter of encoder and decoder (CPTC included) receives a gradient from the loss.
 TEST(ConvVae, LossGradientReachesEveryParameter) {
   for (VaeArchitecture architecture : {VaeArchitecture::kShallow, VaeArchitecture::kDeep}) {
     torch::manual_seed(10);
     ConvVae vae(VaeOptions{architecture, 12, DecoderPadding::kCircular});
     const torch::Tensor x = torch::rand({8, 180});
-    ComputeVaeLoss(vae(x), x, 1.0).total.backward();
+    ComputeVaeLoss(vae(x, at::make_generator<at::CPUGeneratorImpl>(1)), x, 1.0).total.backward();
     for (const auto& parameter : vae->named_parameters()) {
       ASSERT_TRUE(parameter.value().grad().defined()) << parameter.key();
       EXPECT_GT(parameter.value().grad().abs().sum().item<float>(), 0) << parameter.key();

@@ -162,6 +162,43 @@ TEST(ConfigFlagsTest, HelpListsTheConfigurationKeys) {
                std::invalid_argument);
 }
 
+// Runs a program with a required --out and ConfigFlags over FlagSchema; returns its stdout.
+std::string RunPrintingConfig(std::vector<std::string> arguments, int expected_status) {
+  std::vector<char*> argv = Argv(arguments);
+  ::testing::internal::CaptureStdout();
+  const int status = RunProgram("prog", static_cast<int>(arguments.size()), argv.data(),
+                                [](int argc, char** argv) {
+                                  CLI::App app{"test"};
+                                  std::string out;
+                                  app.add_option("--out", out, "required")->required();
+                                  ConfigFlags flags(app, FlagSchema());
+                                  flags.AddFlag("--steps", "ppo.total_steps");
+                                  ParseCommandLine(app, argc, argv);
+                                  return 7;  // not reached with --print-config
+                                });
+  EXPECT_EQ(status, expected_status);
+  return ::testing::internal::GetCapturedStdout();
+}
+
+TEST(ConfigFlagsTest, PrintConfigPrintsTheResolvedConfigurationAndExitsZero) {
+  const std::string printed = RunPrintingConfig(
+      {"prog", "--set", "ppo.learning_rate=0.5", "--print-config", "--steps", "9"}, 0);
+  EXPECT_EQ(printed,
+            "# prog configuration (prog --print-config); read with --config FILE.yaml.\n"
+            "ppo:\n"
+            "  total_steps: 9  # environment steps\n"
+            "  learning_rate: 0.5  # Adam learning rate\n"
+            "extractor:\n"
+            "  locked: true  # freeze the encoder\n");
+  EXPECT_EQ(RunPrintingConfig({"prog", "--out", "x"}, 7), "");
+}
+
+TEST(ConfigFlagsTest, PrintConfigReportsBadValues) {
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(RunPrintingConfig({"prog", "--print-config", "--steps", "0"}, 2), "");
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(), HasSubstr("out of range"));
+}
+
 TEST(StopFlagTest, SignalsRequestAStop) {
   {
     StopFlag stop;

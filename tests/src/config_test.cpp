@@ -229,6 +229,15 @@ TEST(ConfigTest, ToYamlKeepsSchemaOrderAndNesting) {
   EXPECT_THAT(yaml, HasSubstr("ppo:\n  learning_rate: 0.0002\n  n_epochs: 4\n"));
 }
 
+TEST_F(ConfigFileTest, ToDocumentedYamlCommentsEveryKeyAndReadsBackAsToYaml) {
+  const Config original = Config::Load(TestSchema(), "", {"ppo.n_epochs=9", "run.name=x"});
+  const std::string yaml = original.ToDocumentedYaml();
+  EXPECT_THAT(yaml, HasSubstr("ppo:\n  learning_rate: 0.0002  # Adam learning rate\n"));
+  EXPECT_THAT(yaml, HasSubstr("seed_offset: 0.5  # a top-level key\n"));
+  EXPECT_EQ(Config::Load(TestSchema(), WriteYaml(yaml)).ToYaml(), original.ToYaml());
+  EXPECT_EQ(Config::Defaults(ConfigSchema()).ToDocumentedYaml(), "");
+}
+
 TEST(ConfigTest, ToJsonNestsKeysWithTheirTypes) {
   const nlohmann::json json = Config::Defaults(TestSchema()).ToJson();
   EXPECT_EQ(json["ppo"]["n_epochs"], 4);

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <stdexcept>
 #include <vector>
 
@@ -17,6 +18,22 @@ TEST(ThreadPool, CoversEveryIndexOnceAndPropagatesErrors) {
                                 [](int i) {
                                   if (i == 7) throw std::runtime_error("x");
                                 }),
+               std::runtime_error);
+}
+
+TEST(ThreadPool, WatchingCallerPollsAndSeesEveryIndexOnce) {
+  std::vector<std::atomic<int>> hits(1000);
+  int polls = 0;
+  ParallelFor(
+      1000, 3, [&](int i) { ++hits[i]; }, [&] { ++polls; });
+  for (const std::atomic<int>& h : hits) EXPECT_EQ(h, 1);
+  EXPECT_GE(polls, 1);
+  EXPECT_THROW(ParallelFor(
+                   10, 2,
+                   [](int i) {
+                     if (i == 3) throw std::runtime_error("x");
+                   },
+                   [] {}),
                std::runtime_error);
 }
 

@@ -9,8 +9,8 @@
 
 #include "src/seeding.h"
 #include "train/dataset/file.h"
-#include "train/dataset/scan_group.h"
 #include "train/dataset/recording.h"
+#include "train/dataset/scan_group.h"
 
 namespace colav {
 

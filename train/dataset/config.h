@@ -1,15 +1,14 @@
-// generate_dataset's configuration keys (configs/dataset.yaml documents the defaults).
+// generate_dataset's configuration keys, bound to DatasetGenerationOptions
+// (configs/dataset.yaml lists the defaults).
 #pragma once
 
-#include "src/config.h"
+#include "src/options_binding.h"
 #include "train/dataset/generation.h"
 
 namespace colav {
 
-ConfigSchema DatasetGenerationSchema();
-
-/// The options of a resolved configuration; inconsistent keys (a minimum above its maximum,
-/// shares above 1) are a UserError naming them.
-DatasetGenerationOptions DatasetGenerationOptionsFrom(const Config& config);
+/// The dataset.*, augmentation.*, synthetic.*, pilot.* and recording.* keys. Reading inconsistent
+/// keys (a minimum above its maximum, shares above 1) is a UserError naming them.
+OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding();
 
 }  // namespace colav

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "src/threads/parallel_for.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 
@@ -21,8 +21,8 @@ std::vector<RangeScan> GenerateSyntheticScans(ScanGroup group, std::int64_t coun
   const std::string stream = "dataset.synthetic." + std::to_string(static_cast<int>(group));
   std::vector<RangeScan> scans(static_cast<std::size_t>(count));
   ParallelFor(
-      count, options.threads,
-      [&](std::int64_t j) {
+      static_cast<int>(count), options.threads,
+      [&](int j) {
         Rng rng = MakeRng(options.seed, stream, static_cast<std::uint64_t>(j));
         scans[static_cast<std::size_t>(j)] = ScanSyntheticScene(
             SampleSyntheticScene(rng, ObstacleCountsOf(group), options.synthetic));

@@ -1,5 +1,5 @@
 // generate_dataset's work: simulator scans under the scripted pilot, synthetic scans of the three
-// groups, then augmentation and the split (dataset_augmentation.h). Everything is a function of
+// groups, then augmentation and the split (augmentation.h). Everything is a function of
 // the seed; the thread count only changes the speed.
 #pragma once
 

@@ -1,7 +1,6 @@
 #include "train/dataset/pilot.h"
 
 #include <algorithm>
-#include <utility>
 
 #include "src/random.h"
 
@@ -9,7 +8,7 @@ namespace colav {
 
 ScriptedPilot::ScriptedPilot(const ScriptedPilotOptions& options, Rng rng)
     : options_(options),
-      rng_(std::move(rng)),
+      rng_(rng),
       thrust_(Uniform(rng_, options.thrust_min, options.thrust_max)) {}
 
 std::array<double, kActionSize> ScriptedPilot::Act(const World& world) {

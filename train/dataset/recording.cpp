@@ -6,7 +6,7 @@
 #include "env/environment.h"
 #include "env/training_scenario.h"
 #include "src/random.h"
-#include "src/threads/parallel_for.h"
+#include "src/threads/thread_pool.h"
 
 namespace colav {
 namespace {
@@ -56,11 +56,11 @@ std::vector<RangeScan> RecordSimulatorScans(std::int64_t count, std::uint64_t se
   std::uint64_t next_episode = 0;
   // Rounds of episodes in parallel; a round's episodes are appended in episode order.
   while (static_cast<std::int64_t>(scans.size()) < count) {
-    const std::int64_t round_size = 16 * std::max(1, threads);
+    const int round_size = 16 * std::max(1, threads);
     std::vector<std::vector<RangeScan>> round(static_cast<std::size_t>(round_size));
     ParallelFor(
         round_size, threads,
-        [&](std::int64_t i) {
+        [&](int i) {
           round[static_cast<std::size_t>(i)] =
               RecordEpisodeScans(seed, next_episode + static_cast<std::uint64_t>(i), options);
           recorded += static_cast<std::int64_t>(round[static_cast<std::size_t>(i)].size());

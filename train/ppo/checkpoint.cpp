@@ -25,7 +25,7 @@ std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir) {
 }
 
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                    const PolicyOptimizer& optimizer, torch::Generator& generator,
+                    const Adam& optimizer, torch::Generator& generator,
                     const TrainingCounters& counters, bool keep_policy_copy) {
   ExportPolicy(model, counters.global_step, run_dir / "policy.pt");
   if (keep_policy_copy) {
@@ -52,7 +52,7 @@ void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model
 }
 
 TrainingCounters LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                                PolicyOptimizer& optimizer, torch::Generator& generator) {
+                                Adam& optimizer, torch::Generator& generator) {
   const std::filesystem::path path = TrainingStatePath(run_dir);
   const std::string file = "training state '" + path.string() + "'";
   if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");

@@ -13,7 +13,7 @@
 #include <filesystem>
 
 #include "models/actor_critic.h"
-#include "train/ppo/optimizer.h"
+#include "models/adam.h"
 
 namespace colav {
 
@@ -29,12 +29,12 @@ struct TrainingCounters {
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir);
 
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                    const PolicyOptimizer& optimizer, torch::Generator& generator,
+                    const Adam& optimizer, torch::Generator& generator,
                     const TrainingCounters& counters, bool keep_policy_copy);
 
 /// Restores the weights, optimiser and generator in place. A missing state file, or one that does
 /// not fit `model`, is a UserError naming it.
 TrainingCounters LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                                PolicyOptimizer& optimizer, torch::Generator& generator);
+                                Adam& optimizer, torch::Generator& generator);
 
 }  // namespace colav

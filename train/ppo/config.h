@@ -1,13 +1,14 @@
-// The configuration of a PPO run: keys, defaults (the paper's table, reference-learning 6.4) and
-// their translation into the trainer's and the model's options. configs/ppo.yaml lists them all.
+// The configuration of a PPO run: its options (defaults: the paper's table, reference-learning
+// 6.4) and the configuration keys bound to them. configs/ppo.yaml lists them all.
 #pragma once
 
 #include <cstdint>
 
+#include "env/environment_spec.h"
 #include "models/actor_critic.h"
-#include "src/config.h"
+#include "models/adam.h"
+#include "src/options_binding.h"
 #include "train/ppo/loss.h"
-#include "train/ppo/optimizer.h"
 
 namespace colav {
 
@@ -28,10 +29,16 @@ struct PpoOptions {
   int env_threads = 0;  ///< 0: one per core
 };
 
-/// Declares ppo.*, extractor.*, train.* and env.* keys.
-void AddPpoKeys(ConfigSchema& schema);
-PpoOptions PpoOptionsFrom(const Config& config);
-/// The actor-critic of a configuration (extractor, hidden sizes, log std, seed).
-ActorCriticOptions ActorCriticOptionsFrom(const Config& config);
+/// Everything a train_ppo run is configured with.
+struct PpoRunOptions {
+  PpoOptions ppo;
+  /// Its seed follows from ppo.seed.
+  ActorCriticOptions model;
+  EnvironmentConfig env;
+};
+
+/// The ppo.*, policy.*, extractor.*, train.* and env.* keys. Reading checks that a VAE extractor
+/// has an encoder file and derives the model's seed from train.seed.
+OptionsBinding<PpoRunOptions> PpoRunBinding();
 
 }  // namespace colav

@@ -15,35 +15,6 @@ const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
 
 }  // namespace
 
-PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::Tensor& values,
-                      const torch::Tensor& actions, const torch::Tensor& old_log_probs,
-                      const torch::Tensor& advantages, const torch::Tensor& returns,
-                      const PpoLossOptions& options) {
-  torch::Tensor normalized = advantages;
-  if (options.normalize_advantage && advantages.numel() > 1) {
-    normalized = (advantages - advantages.mean()) / (advantages.std() + kAdvantageEpsilon);
-  }
-  const torch::Tensor log_ratio = distribution.LogProb(actions) - old_log_probs;
-  const torch::Tensor ratio = torch::exp(log_ratio);
-  const torch::Tensor clipped_ratio =
-      torch::clamp(ratio, 1.0 - options.clip_range, 1.0 + options.clip_range);
-  const torch::Tensor policy_loss =
-      -torch::min(normalized * ratio, normalized * clipped_ratio).mean();
-  const torch::Tensor value_loss = torch::mse_loss(returns, values.flatten());
-  const torch::Tensor entropy_loss = -distribution.Entropy().mean();
-  PpoLossResult result;
-  result.loss = policy_loss + options.ent_coef * entropy_loss + options.vf_coef * value_loss;
-  torch::NoGradGuard no_grad;
-  result.stats.loss = result.loss.item<double>();
-  result.stats.policy_gradient_loss = policy_loss.item<double>();
-  result.stats.value_loss = value_loss.item<double>();
-  result.stats.entropy_loss = entropy_loss.item<double>();
-  result.stats.approx_kl = ((ratio - 1) - log_ratio).mean().item<double>();
-  result.stats.clip_fraction =
-      ((ratio - 1).abs() > options.clip_range).to(torch::kFloat64).mean().item<double>();
-  return result;
-}
-
 PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const float* value,
                               const PpoMinibatch& batch, const PpoLossOptions& options,
                               float* d_mean, float* d_log_std, float* d_value) {

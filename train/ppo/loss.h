@@ -3,14 +3,10 @@
 //   r  = exp(log pi(a|s) - log pi_old(a|s))
 //   L  = -mean(min(r A', clip(r, 1 - c, 1 + c) A')) + ent_coef * (-mean entropy)
 //        + vf_coef * mean((returns - V)^2)
-// Two implementations: PpoLoss with autograd (the reference, used by the tests), and
-// PpoLossGradients, which gives the same loss with its gradients in closed form for the
-// hand-written backward pass (FastActorCritic).
+// PpoLossGradients gives the loss with its gradients in closed form for the hand-written backward
+// pass (FastActorCritic); the tests check it against an autograd reference
+// (tests/train/ppo/reference_ppo_loss.h).
 #pragma once
-
-#include <torch/torch.h>
-
-#include "models/diagonal_gaussian.h"
 
 namespace colav {
 
@@ -30,18 +26,6 @@ struct PpoLossStats {
   double approx_kl = 0.0;      ///< mean((r - 1) - log r)
   double clip_fraction = 0.0;  ///< fraction of samples with |r - 1| > clip_range
 };
-
-struct PpoLossResult {
-  torch::Tensor loss;  ///< scalar, differentiable
-  PpoLossStats stats;
-};
-
-/// Autograd version: distribution of the current policy, values [B] (or [B, 1]), and the
-/// minibatch's actions [B, 2], old log-probabilities, advantages and returns [B].
-PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::Tensor& values,
-                      const torch::Tensor& actions, const torch::Tensor& old_log_probs,
-                      const torch::Tensor& advantages, const torch::Tensor& returns,
-                      const PpoLossOptions& options);
 
 /// A minibatch of B samples in flat arrays.
 struct PpoMinibatch {

@@ -4,17 +4,10 @@
 #include <chrono>
 #include <cmath>
 
-#include "src/seeding.h"
-
 namespace colav {
 namespace {
 
 const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
-
-// The seed BatchedEnvironment plays episode `count` of world `env` from (its private EpisodeSeed).
-std::uint64_t EpisodeSeedOf(std::uint64_t env_seed, int env, std::uint64_t count) {
-  return DeriveSeed(env_seed, "episode", (static_cast<std::uint64_t>(env) << 32U) + count);
-}
 
 }  // namespace
 
@@ -69,7 +62,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
       buffer.dones(t)[e] = env_.terminated()[e] || env_.truncated()[e];
       buffer.truncated(t)[e] = env_.truncated()[e];
       if (const auto& episode = env_.finished_episodes()[e]) {
-        finished_.push_back({e, EpisodeSeedOf(env_seed_, e, episode_counts_[e]++), *episode});
+        finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, episode_counts_[e]++), *episode});
       }
     }
     ValueFinalObservations(policy, t, buffer);

@@ -3,15 +3,12 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
-#include <cstdio>
-#include <thread>
 
-#include "env/environment_config.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/progress.h"
 #include "src/seeding.h"
-#include "train/ppo/config.h"
+#include "src/threads/thread_pool.h"
 #include "train/ppo/rollout.h"
 #include "train/ppo/update.h"
 
@@ -20,16 +17,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double SecondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
-std::string Fixed(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, value);
-  return text;
-}
-
 ProgressMetrics ProgressMetricsOf(const RollingEpisodeStats& rolling) {
   if (rolling.count == 0) return {};
   return {{"reward", Fixed(rolling.reward, 0)},
@@ -37,7 +24,7 @@ ProgressMetrics ProgressMetricsOf(const RollingEpisodeStats& rolling) {
           {"collisions", Fixed(100.0 * rolling.collision_rate, 0) + "%"}};
 }
 
-nlohmann::json SummaryJson(const Config& config, const PpoRunSummary& summary) {
+nlohmann::json SummaryJson(const nlohmann::json& resolved_config, const PpoRunSummary& summary) {
   const RollingEpisodeStats& r = summary.rolling;
   return {{"global_step", summary.counters.global_step},
           {"n_updates", summary.counters.n_updates},
@@ -61,21 +48,22 @@ nlohmann::json SummaryJson(const Config& config, const PpoRunSummary& summary) {
             {"steps", r.steps},
             {"collision_rate", r.collision_rate},
             {"goal_rate", r.goal_rate}}},
-          {"config", config.ToJson()}};
+          {"config", resolved_config}};
 }
 
 class PpoTrainer {
  public:
-  PpoTrainer(const Config& config, std::filesystem::path run_dir, bool resume)
-      : config_(config),
+  PpoTrainer(const PpoRunOptions& options, nlohmann::json resolved_config,
+             std::filesystem::path run_dir, bool resume)
+      : resolved_config_(std::move(resolved_config)),
         run_dir_(std::move(run_dir)),
-        options_(PpoOptionsFrom(config)),
-        model_(ModelOptions(config, resume)),
+        options_(options.ppo),
+        model_(ModelOptions(options.model, resume)),
         updater_(model_, options_),
         generator_(at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(options_.seed, "ppo"))),
         counters_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_)
                          : TrainingCounters{}),
-        collector_(EnvironmentConfigFrom(config), options_.n_envs, Threads(options_.env_threads),
+        collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
                    // A resumed session plays new scenarios, reproducibly.
                    DeriveSeed(options_.seed, "worlds", counters_.global_step)),
         logs_(run_dir_, resume ? std::optional<std::int64_t>(counters_.global_step) : std::nullopt),
@@ -125,10 +113,7 @@ class PpoTrainer {
       IterationTiming timing;
       timing.rollout_s = SecondsSince(rollout_start);
       summary_.rollout_s += timing.rollout_s;
-      if (!complete) {
-        stopped = true;
-        break;
-      }
+      if (!complete) break;  // stopped in the middle of the rollout
       const Clock::time_point update_start = Clock::now();
       buffer_.ComputeReturnsAndAdvantages(options_.gamma, options_.gae_lambda);
       const UpdateStats stats = updater_.Update(buffer_, generator_);
@@ -151,23 +136,17 @@ class PpoTrainer {
     summary_.finished = counters_.global_step >= options_.total_steps;
     summary_.rolling = logs_.Rolling();
     WriteTextFileAtomically(run_dir_ / "summary.json",
-                            SummaryJson(config_, summary_).dump(2) + "\n");
+                            SummaryJson(resolved_config_, summary_).dump(2) + "\n");
     return summary_;
   }
 
  private:
-  static ActorCriticOptions ModelOptions(const Config& config, bool resume) {
-    ActorCriticOptions options = ActorCriticOptionsFrom(config);
+  static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {
     if (resume) options.extractor.encoder.clear();  // the weights come from the checkpoint
     return options;
   }
 
-  static int Threads(int configured) {
-    return configured > 0 ? configured
-                          : static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
-  }
-
-  Config config_;
+  nlohmann::json resolved_config_;
   std::filesystem::path run_dir_;
   PpoOptions options_;
   ActorCritic model_;
@@ -182,11 +161,9 @@ class PpoTrainer {
 
 }  // namespace
 
-PpoRunSummary TrainPpo(const Config& config, const std::filesystem::path& run_dir, bool resume) {
-  // The networks are far too small for intra-op threads; idle OpenMP workers would only compete
-  // with the environment's threads.
-  torch::set_num_threads(1);
-  PpoTrainer trainer(config, run_dir, resume);
+PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
+                       const std::filesystem::path& run_dir, bool resume) {
+  PpoTrainer trainer(options, resolved_config, run_dir, resume);
   return trainer.Run();
 }
 

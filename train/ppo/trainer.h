@@ -7,9 +7,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 
-#include "src/config.h"
 #include "train/ppo/checkpoint.h"
+#include "train/ppo/config.h"
 #include "train/ppo/logs.h"
 
 namespace colav {
@@ -27,8 +28,11 @@ struct PpoRunSummary {
   RollingEpisodeStats rolling;
 };
 
-/// Trains the agent configured by `config` (AddPpoKeys) in run_dir, from scratch or resuming from
-/// its checkpoint, and writes run_dir/summary.json.
-PpoRunSummary TrainPpo(const Config& config, const std::filesystem::path& run_dir, bool resume);
+/// Trains the agent configured by `options` in run_dir, from scratch or resuming from its
+/// checkpoint, and writes run_dir/summary.json, which records `resolved_config` (Config::ToJson of
+/// the configuration the options were read from). LibTorch's intra-op thread count is the caller's
+/// to set (train_ppo runs one).
+PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
+                       const std::filesystem::path& run_dir, bool resume);
 
 }  // namespace colav

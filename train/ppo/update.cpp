@@ -67,9 +67,8 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
                                std::to_string(n_updates_ + epoch + 1));
       }
       policy_.Backward(d_mean_.data(), d_value_.data(), d_log_std, B);
-      const double norm = PolicyOptimizer::GradientNorm(policy_.gradients());
-      optimizer_.Step(policy_.gradients(),
-                      PolicyOptimizer::ClipCoefficient(norm, options_.max_grad_norm));
+      const double norm = GradientNorm(policy_.gradients());
+      optimizer_.Step(policy_.gradients(), ClipCoefficient(norm, options_.max_grad_norm));
 
       stats.policy_gradient_loss += loss.policy_gradient_loss;
       stats.value_loss += loss.value_loss;

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "models/actor_critic_fast.h"
+#include "models/adam.h"
 #include "train/ppo/config.h"
-#include "train/ppo/optimizer.h"
 #include "train/ppo/rollout_buffer.h"
 
 namespace colav {
@@ -46,7 +46,7 @@ class PpoUpdater {
   UpdateStats Update(const RolloutBuffer& buffer, torch::Generator& generator);
 
   FastActorCritic& policy() { return policy_; }
-  PolicyOptimizer& optimizer() { return optimizer_; }
+  Adam& optimizer() { return optimizer_; }
   std::int64_t n_updates() const { return n_updates_; }
   void set_n_updates(std::int64_t n_updates) { n_updates_ = n_updates; }
 
@@ -56,7 +56,7 @@ class PpoUpdater {
 
   PpoOptions options_;
   FastActorCritic policy_;
-  PolicyOptimizer optimizer_;
+  Adam optimizer_;
   std::int64_t n_updates_ = 0;
   std::vector<float> features_;  // [rollout, features_dim] when the extractor is frozen
   std::vector<const float*> rows_;

@@ -38,7 +38,7 @@ std::vector<EpochLosses> HistoryFromTensor(const torch::Tensor& table) {
 }  // namespace
 
 void SaveVaeCheckpoint(const std::filesystem::path& path, const std::string& signature,
-                       ConvVae& model, LoopAdam& optimizer, const VaeProgress& progress) {
+                       ConvVae& model, Adam& optimizer, const VaeProgress& progress) {
   torch::serialize::OutputArchive archive;
   torch::serialize::OutputArchive model_archive;
   model->save(model_archive);
@@ -54,7 +54,7 @@ void SaveVaeCheckpoint(const std::filesystem::path& path, const std::string& sig
 }
 
 VaeProgress LoadVaeCheckpoint(const std::filesystem::path& path, const std::string& signature,
-                              ConvVae& model, LoopAdam& optimizer) {
+                              ConvVae& model, Adam& optimizer) {
   torch::serialize::InputArchive archive;
   c10::IValue stored_signature;
   torch::Tensor history;

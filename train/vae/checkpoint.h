@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "models/adam.h"
 #include "models/conv_vae.h"
 #include "train/vae/trainer.h"
-#include "train/vae/adam.h"
 
 namespace colav {
 
@@ -21,11 +21,11 @@ struct VaeProgress {
 };
 
 void SaveVaeCheckpoint(const std::filesystem::path& path, const std::string& signature,
-                       ConvVae& model, LoopAdam& optimizer, const VaeProgress& progress);
+                       ConvVae& model, Adam& optimizer, const VaeProgress& progress);
 
 /// Restores model, optimizer and progress from `path`. A file made with another signature, or
 /// one that cannot be read, is a UserError naming it.
 VaeProgress LoadVaeCheckpoint(const std::filesystem::path& path, const std::string& signature,
-                              ConvVae& model, LoopAdam& optimizer);
+                              ConvVae& model, Adam& optimizer);
 
 }  // namespace colav

@@ -1,5 +1,5 @@
-// train_vae's configuration keys (configs/vae.yaml documents the defaults) and the options they
-// resolve to.
+// train_vae's options and the configuration keys bound to them (configs/vae.yaml lists the
+// defaults).
 #pragma once
 
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include "env/environment_spec.h"
 #include "models/conv_vae.h"
-#include "src/config.h"
+#include "src/options_binding.h"
 
 namespace colav {
 
@@ -28,9 +28,9 @@ struct VaeTrainingOptions {
   bool figures = true;
 };
 
-ConfigSchema VaeTrainingSchema();
-/// The options of a resolved configuration; a missing data path is a UserError.
-VaeTrainingOptions VaeTrainingOptionsFrom(const Config& config);
+/// The data.*, vae.*, training.*, evaluation.* and figures.* keys; reading without a data path
+/// is a UserError.
+OptionsBinding<VaeTrainingOptions> VaeTrainingBinding();
 
 /// "shallow, latent 12, beta 1, circular decoder", for logs and tables.
 std::string DescribeVae(const VaeTrainingOptions& options);

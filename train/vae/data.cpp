@@ -58,12 +58,6 @@ VaeData LoadVaeData(const std::filesystem::path& path, ClosenessTransform transf
   return data;
 }
 
-ClosenessTransform ParseClosenessTransform(const std::string& name, const std::string& key) {
-  if (name == "linear") return ClosenessTransform::kLinear;
-  if (name == "log") return ClosenessTransform::kLog;
-  throw UserError(key + ": unknown transform '" + name + "' (expected linear or log)");
-}
-
 torch::Tensor WithTrainingNoise(const torch::Tensor& x, double variance, std::uint64_t seed,
                                 bool clip) {
   if (variance <= 0.0) return x.clone();

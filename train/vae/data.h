@@ -23,9 +23,6 @@ struct VaeData {
 /// without rows is a UserError naming the file.
 VaeData LoadVaeData(const std::filesystem::path& path, ClosenessTransform transform);
 
-/// "linear" or "log"; anything else is a UserError naming `key` and the value.
-ClosenessTransform ParseClosenessTransform(const std::string& name, const std::string& key);
-
 /// x + N(0, variance) noise, drawn from a generator seeded with `seed` (the paper's sigma^2 =
 /// 0.007 on the training split: sd 0.084, about 12.5 m). The reference does not clip, and BCE
 /// accepts the targets outside [0, 1] that result; but BCE is then unbounded below (a target t < 0

@@ -7,12 +7,20 @@
 
 #include "env/angles.h"
 #include "env/range_finder.h"
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
 
 constexpr int kPanelSize = 330;  // pixels per polar panel
+
+// The paper's blue and red: input scans and their reconstructions, train and validation losses.
+constexpr const char* kBlue = "#1f4fd0";
+constexpr const char* kRed = "#e02020";
+
+constexpr const char* kPolarGridColour = "#d0d0d0";
+constexpr const char* kSeamColour = "#808080";
 
 // Inline gnuplot data block `name`: one "bearing range" line per ray, heading up, closed loop.
 std::string PolarDataBlock(const std::string& name, const torch::Tensor& ranges) {
@@ -32,9 +40,10 @@ std::string PolarDataBlock(const std::string& name, const torch::Tensor& ranges)
 std::string PolarPanelSettings() {
   return "set polar\nset angles radians\nset size ratio -1\nunset border\nunset xtics\n"
          "unset ytics\nunset raxis\nunset key\nset rrange [0:150]\nset xrange [-150:150]\n"
-         "set yrange [-150:150]\nset grid polar pi/6 lc rgb '#d0d0d0'\nset rtics 50 format ''\n"
+         "set yrange [-150:150]\nset grid polar pi/6 " +
+         LineColour(kPolarGridColour) + "\nset rtics 50 format ''\n" +
          // The seam between ray 179 and ray 0, straight behind the vessel.
-         "set arrow 1 from 0,0 to 0,-150 nohead dt 2 lc rgb '#808080'\n"
+         "set arrow 1 from 0,0 to 0,-150 nohead dt 2 " + LineColour(kSeamColour) + "\n" +
          "set object 1 circle at 0,0 size 3 fc rgb 'black' fs solid\n";
 }
 
@@ -81,8 +90,7 @@ void DrawPolarReconstructions(const torch::Tensor& scans, const std::vector<Conv
   const auto rows = static_cast<std::int64_t>(models.size());
   const torch::Tensor inputs = RangesFromCloseness(scans, transform).to(torch::kFloat32);
   std::ostringstream script;
-  script << "set multiplot layout " << rows << "," << columns << " title "
-         << GnuplotQuote(title + "   (blue: input, red: reconstruction)") << " font ',13'\n"
+  script << MultiplotLayout(rows, columns, title + "   (blue: input, red: reconstruction)", 13)
          << PolarPanelSettings();
   for (std::int64_t m = 0; m < rows; ++m) {
     ConvVae model = models[static_cast<std::size_t>(m)];  // a handle on the same module
@@ -92,8 +100,8 @@ void DrawPolarReconstructions(const torch::Tensor& scans, const std::vector<Conv
       script << PolarDataBlock("in", inputs[s].contiguous())
              << PolarDataBlock("out", reconstructions[s].contiguous()) << "set title "
              << GnuplotQuote(model_names[static_cast<std::size_t>(m)]) << "\n"
-             << "plot $in using 1:2 with lines lw 2 lc rgb '#1f4fd0', "
-                "$out using 1:2 with lines lw 2 lc rgb '#e02020'\n";
+             << "plot $in using 1:2 with lines lw 2 " << LineColour(kBlue)
+             << ", $out using 1:2 with lines lw 2 " << LineColour(kRed) << "\n";
     }
   }
   script << "unset multiplot\n";
@@ -112,10 +120,9 @@ void DrawTrainingCurves(const std::vector<std::vector<EpochLosses>>& histories, 
              << h.validation_bce + beta * h.validation_kl << '\n';
     }
     script << "EOD\n";
-    plots << (s == 0 ? "plot " : ", ") << "$seed" << s
-          << " using 1:2 with lines lw 2 lc rgb '#1f4fd0' title "
-          << (s == 0 ? "'train (noisy)'" : "''") << ", $seed" << s
-          << " using 1:3 with lines lw 2 dt 2 lc rgb '#e02020' title "
+    plots << (s == 0 ? "plot " : ", ") << "$seed" << s << " using 1:2 with lines lw 2 "
+          << LineColour(kBlue) << " title " << (s == 0 ? "'train (noisy)'" : "''") << ", $seed" << s
+          << " using 1:3 with lines lw 2 dt 2 " << LineColour(kRed) << " title "
           << (s == 0 ? "'validation'" : "''");
   }
   script << "set title " << GnuplotQuote(title) << "\nset xlabel 'epoch'\n"

@@ -5,13 +5,18 @@
 #include <stdexcept>
 
 #include "env/angles.h"
-#include "src/gnuplot.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
 
 namespace colav {
 namespace {
 
 // Grid points per chunk of the density sum, to bound the [chunk, n] distance matrix.
 constexpr std::int64_t kGridChunk = 512;
+
+// White (no density) to dark blue.
+constexpr const char* kDensityPalette =
+    "(0 '#ffffff', 0.15 '#c6dbef', 0.4 '#6baed6', 0.7 '#2171b5', 1 '#08306b')";
 
 torch::Tensor Axis(const torch::Tensor& values, int size) {
   const double low = torch::quantile(values, 0.005).item<double>();
@@ -59,11 +64,9 @@ void DrawDensityPanels(const std::vector<DensityPanel>& panels, int columns,
                        const std::string& title, const std::filesystem::path& png) {
   const int rows = static_cast<int>((panels.size() + columns - 1) / columns);
   std::ostringstream script;
-  script << "set multiplot layout " << rows << "," << columns << " title " << GnuplotQuote(title)
-         << " font ',14'\n"
+  script << MultiplotLayout(rows, columns, title, 14)
          << "set size square\nunset key\nset xlabel 'z_1'\nset ylabel 'z_2'\n"
-         << "set palette defined (0 '#ffffff', 0.15 '#c6dbef', 0.4 '#6baed6', 0.7 '#2171b5', "
-            "1 '#08306b')\n"
+         << "set palette defined " << kDensityPalette << "\n"
          << "unset colorbox\nset tics out nomirror\n";
   for (std::size_t k = 0; k < panels.size(); ++k) {
     const DensityGrid& grid = panels[k].grid;

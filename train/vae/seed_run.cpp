@@ -10,9 +10,9 @@
 #include "src/error.h"
 #include "src/progress.h"
 #include "src/seeding.h"
-#include "train/vae/trainer.h"
 #include "train/vae/checkpoint.h"
 #include "train/vae/evaluation.h"
+#include "train/vae/trainer.h"
 
 namespace colav {
 namespace {
@@ -21,10 +21,6 @@ constexpr char kCheckpointFile[] = "checkpoint.pt";
 constexpr char kResultFile[] = "result.json";
 // Minibatches between two progress-line updates.
 constexpr std::int64_t kProgressInterval = 50;
-
-double SecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The finished result in `seed_dir` made with `signature`, if any.
 bool ReadFinishedResult(const std::filesystem::path& seed_dir, const std::string& signature,
@@ -123,7 +119,7 @@ SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, st
 ConvVae LoadSeedModel(const VaeTrainingOptions& options, std::int64_t index,
                       const std::filesystem::path& seed_dir) {
   ConvVae model(options.model);
-  LoopAdam optimizer(model->parameters(), options.learning_rate);
+  Adam optimizer = MakeVaeOptimizer(model->parameters(), options.learning_rate);
   LoadVaeCheckpoint(seed_dir / kCheckpointFile, VaeRunSignature(options, index), model, optimizer);
   return model;
 }

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "models/conv_vae.h"
-#include "train/vae/data.h"
 #include "train/vae/config.h"
+#include "train/vae/data.h"
 #include "train/vae/summary.h"
 
 namespace colav {

@@ -1,35 +1,20 @@
 #include "train/vae/summary.h"
 
-#include <cstdio>
 #include <sstream>
 
 #include "src/atomic_file.h"
 #include "src/error.h"
+#include "src/progress.h"
 #include "src/statistics.h"
 
 namespace colav {
 namespace {
-
-std::string Fixed(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
-}
 
 std::vector<double> Collect(const std::vector<SeedResult>& results,
                             double (*field)(const SeedResult&)) {
   std::vector<double> values;
   for (const SeedResult& result : results) values.push_back(field(result));
   return values;
-}
-
-nlohmann::json IntervalJson(const MeanConfidenceInterval& summary) {
-  return {{"mean", summary.mean},
-          {"sd", summary.sd},
-          {"ci95_low", summary.low},
-          {"ci95_high", summary.high},
-          {"ci95_half_width", summary.half_width},
-          {"n", summary.count}};
 }
 
 std::string SummaryMarkdown(const VaeTrainingOptions& options,
@@ -140,10 +125,10 @@ void WriteRunSummary(const std::filesystem::path& run_dir, const VaeTrainingOpti
        options.model.decoder_padding == DecoderPadding::kZero ? "zero" : "circular"},
       {"epochs", options.epochs},
       {"data", options.data_path},
-      {"test_error", IntervalJson(test_error)},
+      {"test_error", ConfidenceIntervalJson(test_error)},
       {"test_error_per_seed", Collect(results, [](const SeedResult& r) { return r.test_error; })},
-      {"active_dims", IntervalJson(active)},
-      {"seconds_per_seed", IntervalJson(seconds)},
+      {"active_dims", ConfidenceIntervalJson(active)},
+      {"seconds_per_seed", ConfidenceIntervalJson(seconds)},
       {"seeds", seeds}};
   WriteTextFileAtomically(run_dir / "summary.json", summary.dump(2) + "\n");
   WriteTextFileAtomically(run_dir / "summary.md", SummaryMarkdown(options, results, test_error));

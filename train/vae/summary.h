@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "train/vae/trainer.h"
 #include "train/vae/config.h"
+#include "train/vae/trainer.h"
 
 namespace colav {
 

@@ -3,7 +3,9 @@
 #include <ATen/CPUGeneratorImpl.h>
 
 #include <chrono>
+#include <utility>
 
+#include "models/circular_conv.h"
 #include "models/vae_loss.h"
 #include "src/seeding.h"
 #include "train/vae/evaluation.h"
@@ -17,10 +19,18 @@ torch::Generator SeededGenerator(std::uint64_t seed, const char* stream, std::ui
 
 }  // namespace
 
+Adam MakeVaeOptimizer(std::vector<torch::Tensor> parameters, double learning_rate) {
+  AdamOptions options;
+  options.learning_rate = learning_rate;
+  options.eps = 1e-8;
+  return Adam(std::move(parameters), options, AdamArithmetic::kDoubleStep);
+}
+
 ConvVae MakeVae(const VaeOptions& options, std::uint64_t seed) {
-  // Module initialisers draw from LibTorch's global generator.
-  torch::manual_seed(DeriveSeed(seed, "vae.init"));
-  return ConvVae(options);
+  ConvVae vae(options);
+  torch::Generator generator = SeededGenerator(seed, "vae.init", 0);
+  RedrawLayerParameters(*vae, generator);
+  return vae;
 }
 
 VaeTrainer::VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, std::uint64_t seed)
@@ -31,7 +41,7 @@ VaeTrainer::VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, s
                                      DeriveSeed(seed, "vae.noise"), options.clip_noisy_scans)),
       shuffled_train_(torch::empty_like(noisy_train_)),
       model_(MakeVae(options.model, seed)),
-      optimizer_(model_->parameters(), options.learning_rate) {}
+      optimizer_(MakeVaeOptimizer(model_->parameters(), options.learning_rate)) {}
 
 EpochLosses VaeTrainer::RunEpoch(std::int64_t epoch,
                                  const std::function<void(std::int64_t, double)>& on_batch) {

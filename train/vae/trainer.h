@@ -1,4 +1,5 @@
-// One VAE training run (one seed) in memory: Adam (LoopAdam) on the batch-averaged loss BCE + beta
+// One VAE training run (one seed) in memory: Adam (models/adam.h) on the batch-averaged loss BCE +
+// beta
 // * KL (models/vae_loss.h), the whole training split in one tensor, shuffled once per epoch by a
 // seeded permutation and cut into contiguous minibatches (no per-sample copies), then a
 // validation pass without autograd.
@@ -12,11 +13,12 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
+#include "models/adam.h"
 #include "models/conv_vae.h"
-#include "train/vae/data.h"
-#include "train/vae/adam.h"
 #include "train/vae/config.h"
+#include "train/vae/data.h"
 
 namespace colav {
 
@@ -28,6 +30,9 @@ struct EpochLosses {
   double validation_kl = 0.0;
   double seconds = 0.0;  ///< wall time of the epoch, validation included
 };
+
+/// PyTorch's default Adam (betas 0.9, 0.999, eps 1e-8) with the VAE trainer's rounding.
+Adam MakeVaeOptimizer(std::vector<torch::Tensor> parameters, double learning_rate);
 
 /// A VAE with weights drawn from the stream (seed, "vae.init").
 ConvVae MakeVae(const VaeOptions& options, std::uint64_t seed);
@@ -43,7 +48,7 @@ class VaeTrainer {
                        const std::function<void(std::int64_t, double)>& on_batch = {});
 
   ConvVae& model() { return model_; }
-  LoopAdam& optimizer() { return optimizer_; }
+  Adam& optimizer() { return optimizer_; }
   std::uint64_t seed() const { return seed_; }
 
  private:
@@ -53,7 +58,7 @@ class VaeTrainer {
   torch::Tensor noisy_train_;
   torch::Tensor shuffled_train_;  // reused every epoch
   ConvVae model_;
-  LoopAdam optimizer_;
+  Adam optimizer_;
 };
 
 /// Trains `options.epochs` epochs of run `seed` and returns the model (figures, tests).

@@ -1,3 +1,5 @@
+#include "train/dataset/synthetic.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -5,7 +7,6 @@
 #include "env/angles.h"
 #include "src/random.h"
 #include "train/dataset/shape_overlap.h"
-#include "train/dataset/synthetic.h"
 
 namespace colav {
 namespace {

@@ -6,8 +6,8 @@
 
 #include "src/error.h"
 #include "tests/src/test_util.h"
-#include "train/ppo/trainer.h"
 #include "train/ppo/config.h"
+#include "train/ppo/trainer.h"
 #include "train/ppo/update.h"
 
 namespace colav {
@@ -62,15 +62,13 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
 TEST(PpoCheckpointTest, MissingStateIsAUserError) {
   testing_util::TemporaryFolder directory;
   ActorCritic model(ActorCriticOptions{});
-  PolicyOptimizer optimizer(model->TrainableParameters(), AdamOptions{});
+  Adam optimizer(model->TrainableParameters(), AdamOptions{});
   auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
   EXPECT_THROW(LoadCheckpoint(directory.path(), *model, optimizer, generator), UserError);
 }
 
 Config TinyRun(std::int64_t total_steps) {
-  ConfigSchema schema;
-  AddPpoKeys(schema);
-  Config config = Config::Defaults(schema);
+  Config config = Config::Defaults(PpoRunBinding().Schema());
   for (const auto& [key, value] : std::vector<std::pair<std::string, std::string>>{
            {"ppo.total_steps", std::to_string(total_steps)},
            {"ppo.n_envs", "2"},
@@ -84,6 +82,10 @@ Config TinyRun(std::int64_t total_steps) {
   return config;
 }
 
+PpoRunSummary Train(const Config& config, const std::filesystem::path& run_dir, bool resume) {
+  return TrainPpo(PpoRunBinding().Read(config), config.ToJson(), run_dir, resume);
+}
+
 std::size_t CountLines(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::size_t lines = 0;
@@ -93,7 +95,7 @@ std::size_t CountLines(const std::filesystem::path& path) {
 
 TEST(PpoCheckpointTest, ResumedRunContinuesFromTheCheckpointStep) {
   testing_util::TemporaryFolder directory;
-  const PpoRunSummary first = TrainPpo(TinyRun(64), directory.path(), /*resume=*/false);
+  const PpoRunSummary first = Train(TinyRun(64), directory.path(), /*resume=*/false);
   EXPECT_TRUE(first.finished);
   EXPECT_EQ(first.counters.global_step, 64);
   EXPECT_EQ(first.counters.rollouts, 2);
@@ -104,14 +106,14 @@ TEST(PpoCheckpointTest, ResumedRunContinuesFromTheCheckpointStep) {
   }
   EXPECT_EQ(CountLines(directory.path() / "updates.csv"), 3U);
 
-  const PpoRunSummary second = TrainPpo(TinyRun(128), directory.path(), /*resume=*/true);
+  const PpoRunSummary second = Train(TinyRun(128), directory.path(), /*resume=*/true);
   EXPECT_EQ(second.session_steps, 64);
   EXPECT_EQ(second.counters.global_step, 128);
   EXPECT_EQ(second.counters.n_updates, 4);
   EXPECT_EQ(CountLines(directory.path() / "updates.csv"), 5U);
 
-  ActorCritic model(ActorCriticOptionsFrom(TinyRun(128)));
-  PolicyOptimizer optimizer(model->TrainableParameters(), AdamOptions{});
+  ActorCritic model(PpoRunBinding().Read(TinyRun(128)).model);
+  Adam optimizer(model->TrainableParameters(), AdamOptions{});
   auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
   LoadCheckpoint(directory.path(), *model, optimizer, generator);
   EXPECT_EQ(optimizer.step_count(), 4 * 32 / 8);  // 4 rollouts of 32 samples, batches of 8

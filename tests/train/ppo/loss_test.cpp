@@ -1,8 +1,8 @@
-#include "train/ppo/loss.h"
-
 #include <gtest/gtest.h>
 
 #include <cmath>
+
+#include "tests/train/ppo/reference_ppo_loss.h"
 
 namespace colav {
 namespace {

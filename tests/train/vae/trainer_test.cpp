@@ -10,9 +10,9 @@
 #include "models/torchscript_export.h"
 #include "src/seeding.h"
 #include "tests/src/test_util.h"
-#include "train/vae/data.h"
 #include "train/dataset/generation.h"
 #include "train/vae/checkpoint.h"
+#include "train/vae/data.h"
 #include "train/vae/seed_run.h"
 #include "train/vae/summary.h"
 
@@ -77,7 +77,7 @@ TEST(VaeTrainerTest, TinyRunWritesEveryOutputAndResumesFinishedSeeds) {
   EXPECT_EQ(summary["test_error_per_seed"].size(), 2U);
   EXPECT_NEAR(summary["test_error"]["mean"].get<double>(),
               (results[0].test_error + results[1].test_error) / 2.0, 1e-9);
-  EXPECT_LE(summary["test_error"]["ci95_low"].get<double>(),
+  EXPECT_LE(summary["test_error"]["low"].get<double>(),
             summary["test_error"]["mean"].get<double>());
 
   // The exported encoder gives the trained encoder's mu.

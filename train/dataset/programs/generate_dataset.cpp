@@ -1,6 +1,6 @@
 // generate_dataset: records range scans (simulator under a scripted pilot + synthetic scenes),
 // augments them with random circular shifts, splits them by source scan and writes one HDF5 file
-// (layout in train/dataset_file.h).
+// (layout in train/dataset/file.h).
 #include <CLI/CLI.hpp>
 #include <array>
 #include <chrono>
@@ -41,14 +41,15 @@ int GenerateDataset(int argc, char** argv) {
       "attributes config, seed, description."};
   std::string out_path;
   app.add_option("--out", out_path, "dataset file to write (HDF5)")->required();
-  ConfigFlags config_flags(app, DatasetGenerationSchema());
+  const OptionsBinding<DatasetGenerationOptions> binding = DatasetGenerationBinding();
+  ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--sim-scans", "dataset.sim_scans");
   config_flags.AddFlag("--synthetic-scans", "dataset.synthetic_scans");
   config_flags.AddFlag("--seed", "dataset.seed");
   config_flags.AddFlag("--threads", "dataset.threads");
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
-  const DatasetGenerationOptions options = DatasetGenerationOptionsFrom(config);
+  const DatasetGenerationOptions options = binding.Read(config);
 
   const auto start = std::chrono::steady_clock::now();
   ProgressBar progress("scans", options.sim_scans + options.synthetic_scans, "scans");

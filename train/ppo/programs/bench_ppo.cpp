@@ -4,6 +4,7 @@
 // CPU time (steady under load from other processes; on an idle machine they equal wall time).
 // Ends with headline lines `update_us_per_minibatch_<config>: N`, `policy_us_per_step_<config>: N`
 // and `learner_s_per_3m_steps_<config>: N` (the learner's share of a 3,000,000-step run).
+#include <ATen/CPUGeneratorImpl.h>
 #include <time.h>
 
 #include <CLI/CLI.hpp>
@@ -34,10 +35,11 @@ struct Configuration {
 colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options) {
   colav::RolloutBuffer buffer(options.n_steps, options.n_envs);
   const int N = options.n_envs;
+  torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(1);
   for (int t = 0; t < options.n_steps; ++t) {
-    const torch::Tensor obs = torch::rand({N, colav::kObservationSize});
+    const torch::Tensor obs = torch::rand({N, colav::kObservationSize}, generator);
     std::copy_n(obs.data_ptr<float>(), obs.numel(), buffer.observations(t));
-    const torch::Tensor actions = torch::randn({N, colav::kActionSize});
+    const torch::Tensor actions = torch::randn({N, colav::kActionSize}, generator);
     std::copy_n(actions.data_ptr<float>(), actions.numel(), buffer.actions(t));
     for (int e = 0; e < N; ++e) {
       buffer.log_probs(t)[e] = -2.0f;
@@ -54,6 +56,7 @@ int Main(int argc, char** argv) {
   int rollouts = 2;
   app.add_option("--rollouts", rollouts, "updates timed per configuration")
       ->check(CLI::PositiveNumber);
+  const colav::ConfigFlags config_flags(app, colav::ConfigSchema());  // no keys; --print-config
   colav::ParseCommandLine(app, argc, argv);
   torch::set_num_threads(1);
 

@@ -15,20 +15,14 @@
 #include "src/error.h"
 #include "src/logging.h"
 #include "src/run_folder.h"
-#include "train/ppo/trainer.h"
 #include "train/ppo/config.h"
+#include "train/ppo/trainer.h"
 #include "train/ppo/update.h"
 
 namespace {
 
 // Exit status of a run stopped by a NaN or Inf.
 constexpr int kDivergedStatus = 3;
-
-colav::ConfigSchema TrainPpoSchema() {
-  colav::ConfigSchema schema;
-  colav::AddPpoKeys(schema);
-  return schema;
-}
 
 // A resumed run reads its configuration from RUN_DIR/config.yaml unless --config says otherwise:
 // inserts "--config RUN_DIR/config.yaml" after the program name.
@@ -49,7 +43,8 @@ std::vector<std::string> WithRunConfig(int argc, char** argv) {
 
 int Main(int argc, char** argv) {
   CLI::App app{"Trains the PPO collision-avoidance agent (Stable-Baselines3 semantics)."};
-  colav::ConfigFlags config_flags(app, TrainPpoSchema());
+  const colav::OptionsBinding<colav::PpoRunOptions> binding = colav::PpoRunBinding();
+  colav::ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--extractor", "extractor.name");
   config_flags.AddFlag("--encoder", "extractor.encoder");
   config_flags.AddSwitch("--locked", "extractor.locked", true, "freeze the pre-trained encoder");
@@ -67,6 +62,7 @@ int Main(int argc, char** argv) {
 
   std::vector<std::string> args = WithRunConfig(argc, argv);
   std::vector<char*> arg_pointers;
+  arg_pointers.reserve(args.size());
   for (std::string& arg : args) arg_pointers.push_back(arg.data());
   colav::ParseCommandLine(app, static_cast<int>(arg_pointers.size()), arg_pointers.data());
   if (out.empty() && resume.empty()) throw colav::UserError("--out RUN_DIR is required");
@@ -79,21 +75,28 @@ int Main(int argc, char** argv) {
     throw colav::UserError("--resume " + resume + ": no training_state.pt in that folder");
   }
   const colav::Config config = config_flags.Resolve();
+  const colav::PpoRunOptions options = binding.Read(config);
   // A bad extractor setting or encoder file fails here, before the run folder is touched.
-  if (resume.empty()) colav::ActorCritic(colav::ActorCriticOptionsFrom(config));
+  if (resume.empty()) colav::ActorCritic(options.model);
 
   const colav::RunFolder run = colav::RunFolder::Create(run_path);
   colav::InitLogging("train_ppo", run.LogPath(), verbose);
   run.WriteResolvedConfig(config);
   // The baseline has no pre-trained encoder to lock: it always trains.
-  const std::string extractor = config.GetString("extractor.name");
-  const std::string training_mode = extractor == "baseline"              ? "trained from scratch"
-                                    : config.GetBool("extractor.locked") ? "locked"
-                                                                         : "unlocked";
+  const colav::FeatureExtractorOptions& extractor = options.model.extractor;
+  const std::string training_mode = extractor.kind == colav::ExtractorKind::kBaseline
+                                        ? "trained from scratch"
+                                    : extractor.locked ? "locked"
+                                                       : "unlocked";
   spdlog::info("{} {} steps (extractor {}, {}) in {}", resume.empty() ? "training" : "resuming",
-               config.GetInt("ppo.total_steps"), extractor, training_mode, run_path);
+               options.ppo.total_steps, colav::ExtractorKindName(extractor.kind), training_mode,
+               run_path);
+  // The networks are far too small for intra-op threads; idle OpenMP workers would only compete
+  // with the environment's threads.
+  torch::set_num_threads(1);
   try {
-    const colav::PpoRunSummary summary = colav::TrainPpo(config, run.path(), !resume.empty());
+    const colav::PpoRunSummary summary =
+        colav::TrainPpo(options, config.ToJson(), run.path(), !resume.empty());
     const colav::RollingEpisodeStats& r = summary.rolling;
     spdlog::info(
         "{} at step {}: last {} episodes progress {:.1f}%, cte {:.1f} m, {:.0f} steps, "

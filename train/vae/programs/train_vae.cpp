@@ -13,9 +13,9 @@
 #include "src/logging.h"
 #include "src/run_folder.h"
 #include "src/statistics.h"
+#include "train/vae/config.h"
 #include "train/vae/data.h"
 #include "train/vae/figures.h"
-#include "train/vae/config.h"
 #include "train/vae/seed_run.h"
 #include "train/vae/summary.h"
 
@@ -52,7 +52,8 @@ int TrainVae(int argc, char** argv) {
       "padding vs CPTC, latent densities) come from the program vae_figures."};
   std::string run_dir;
   app.add_option("--out", run_dir, "run folder (created; reused to resume)")->required();
-  ConfigFlags config_flags(app, VaeTrainingSchema());
+  const OptionsBinding<VaeTrainingOptions> binding = VaeTrainingBinding();
+  ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--data", "data.path");
   config_flags.AddFlag("--model", "vae.model");
   config_flags.AddFlag("--latent", "vae.latent_dims");
@@ -67,7 +68,7 @@ int TrainVae(int argc, char** argv) {
   config_flags.AddFlag("--transform", "data.transform");
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
-  const VaeTrainingOptions options = VaeTrainingOptionsFrom(config);
+  const VaeTrainingOptions options = binding.Read(config);
 
   const RunFolder folder = RunFolder::Create(run_dir);
   InitLogging("train_vae", folder.LogPath(), false);

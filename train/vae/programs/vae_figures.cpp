@@ -1,8 +1,6 @@
 // vae_figures: the paper's multi-model VAE figures, each from small models trained here on a
 // generate_dataset file: the zero-padding versus CPTC-1D reconstruction comparison, and the kernel
 // density of the test set's 2-D latent for Shallow and Deep with beta in {0, 1, 5}.
-#include "train/vae/figures.h"
-
 #include <ATen/CPUGeneratorImpl.h>
 #include <spdlog/spdlog.h>
 #include <torch/torch.h>
@@ -14,10 +12,11 @@
 
 #include "src/cli.h"
 #include "src/seeding.h"
+#include "train/vae/config.h"
 #include "train/vae/data.h"
+#include "train/vae/figures.h"
 #include "train/vae/latent_density.h"
 #include "train/vae/trainer.h"
-#include "train/vae/config.h"
 
 namespace colav {
 namespace {
@@ -91,13 +90,14 @@ int VaeFigures(int argc, char** argv) {
   app.add_option("--figures", figures, "which figures: padding, kde")
       ->check(CLI::IsMember({"padding", "kde"}))
       ->delimiter(',');
-  ConfigFlags config_flags(app, VaeTrainingSchema());
+  const OptionsBinding<VaeTrainingOptions> binding = VaeTrainingBinding();
+  ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--data", "data.path");
   config_flags.AddFlag("--epochs", "training.epochs");
   config_flags.AddFlag("--seed", "training.seed");
   config_flags.AddFlag("--threads", "training.threads");
   ParseCommandLine(app, argc, argv);
-  const VaeTrainingOptions options = VaeTrainingOptionsFrom(config_flags.Resolve());
+  const VaeTrainingOptions options = binding.Read(config_flags.Resolve());
   torch::set_num_threads(options.threads);
 
   const VaeData data = LoadVaeData(options.data_path, options.transform);

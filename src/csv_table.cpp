@@ -1,4 +1,4 @@
-#include "eval/csv_table.h"
+#include "src/csv_table.h"
 
 #include <algorithm>
 #include <fstream>
@@ -22,6 +22,13 @@ std::vector<std::string> SplitFields(const std::string& line) {
 // Header is line 1, row k is line k + 2.
 std::string Where(const CsvTable& table, std::size_t row) {
   return table.path.string() + ":" + std::to_string(row + 2);
+}
+
+// The error of a numeric column's field that is not a number (built outside the row loop).
+UserError NotANumber(const CsvTable& table, std::size_t row, const std::string& column,
+                     const std::string& field) {
+  return UserError(Where(table, row) + ": column '" + column + "': '" + field +
+                   "' is not a number");
 }
 
 }  // namespace
@@ -69,7 +76,7 @@ std::vector<double> NumericColumn(const CsvTable& table, const std::string& name
       used = 0;
     }
     if (used == 0 || used != field.size()) {
-      throw UserError(Where(table, r) + ": column '" + name + "': '" + field + "' is not a number");
+      throw NotANumber(table, r, name, field);
     }
     values.push_back(value);
   }
