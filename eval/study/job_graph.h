@@ -1,0 +1,53 @@
+// The jobs of a study and their order: dataset -> VAEs -> PPO runs -> evaluations. Each job is
+// one run of a project program into its own output folder under the study folder
+// (interfaces.md, section "study"); a job is complete when its program's last output exists, and
+// resumable when its program left a checkpoint.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "eval/study/study_spec.h"
+
+namespace colav {
+
+struct StudyJob {
+  std::string id;       ///< "ppo/baseline/seed_0": also its folder under the study folder
+  std::string program;  ///< a program of build/bin
+  std::vector<std::string> args;
+  /// Arguments that continue an interrupted run (empty: rerun `args`, the program resumes).
+  std::vector<std::string> resume_args;
+  /// Exists once the job has finished (a JSON summary with "finished": false does not count).
+  std::filesystem::path complete_marker;
+  std::filesystem::path resume_marker;    ///< exists while an interrupted run can be continued
+  std::vector<std::size_t> dependencies;  ///< indices of jobs that must finish first
+  double estimated_s = 1.0;               ///< for the ETA and to start long jobs first
+  /// Checked with --print-config before the study starts (one seed stands for its siblings).
+  bool check_configuration = true;
+};
+
+/// A group of models evaluated together under the same environment overrides.
+struct EvaluationGroup {
+  std::string name;                 ///< "study", "reference-log", "paper": folder eval/<name>
+  std::vector<std::string> models;  ///< model names, e.g. "baseline.seed_0", "ref.baseline_3m"
+  std::vector<std::filesystem::path> policies;
+  Overrides overrides;  ///< env.* settings of the group
+  int episodes = 0;
+  std::uint64_t seed = 0;
+};
+
+/// "<config>.seed_<k>": the model name of a PPO run in evaluations.
+std::string SeedModelName(const std::string& config, int seed);
+
+/// The evaluation groups of a study: its PPO runs grouped by their env.* overrides, the
+/// reference agents grouped by the env settings of their sidecar files, on the study's scenarios;
+/// and the same again on the paper's scenarios when paper_episodes > 0.
+std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
+                                              const std::filesystem::path& out);
+
+/// Every job of the study with outputs in `out`, dependencies before dependants.
+std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem::path& out);
+
+}  // namespace colav

@@ -1,0 +1,296 @@
+#include "eval/study/job_runner.h"
+
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+#include <utility>
+
+#include "src/cli.h"
+#include "src/error.h"
+#include "src/progress.h"
+
+extern char** environ;
+
+namespace colav {
+namespace {
+
+enum class JobState { kPending, kRunning, kDone, kFailed };
+
+// Share of its estimate a running job is counted as done at most, until it finishes.
+constexpr double kMaxRunningShare = 0.95;
+constexpr auto kPollInterval = std::chrono::milliseconds(100);
+
+std::filesystem::path LogPath(const JobRunnerOptions& options, const StudyJob& job) {
+  std::string name = job.id;
+  std::replace(name.begin(), name.end(), '/', '_');
+  return options.log_dir / (name + ".log");
+}
+
+// The command line of a job: its program and `args`.
+std::vector<std::string> CommandLine(const std::filesystem::path& program_dir, const StudyJob& job,
+                                     const std::vector<std::string>& args) {
+  std::vector<std::string> command = {(program_dir / job.program).string()};
+  command.insert(command.end(), args.begin(), args.end());
+  return command;
+}
+
+std::vector<char*> ArgumentPointers(std::vector<std::string>& command) {
+  std::vector<char*> argv;
+  argv.reserve(command.size() + 1);
+  for (std::string& arg : command) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  return argv;
+}
+
+// Runs `command` to its end and returns its exit status with what it wrote to stdout and stderr.
+std::pair<int, std::string> RunCapturingOutput(std::vector<std::string> command) {
+  int pipe_ends[2];
+  if (pipe(pipe_ends) != 0) throw std::runtime_error("pipe failed");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
+  std::vector<char*> argv = ArgumentPointers(command);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(pipe_ends[1]);
+  std::string output;
+  char buffer[4096];
+  for (ssize_t n = read(pipe_ends[0], buffer, sizeof buffer); n > 0;
+       n = read(pipe_ends[0], buffer, sizeof buffer)) {
+    output.append(buffer, static_cast<std::size_t>(n));
+  }
+  close(pipe_ends[0]);
+  if (spawned != 0) throw UserError(command[0] + ": cannot start (is the project built?)");
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), output};
+}
+
+// Starts the job in its own process group, so that a Ctrl-C at the terminal reaches only the
+// runner, which then asks each job once to stop (a second signal would make a trainer abort).
+pid_t Launch(const StudyJob& job, bool resume, const JobRunnerOptions& options) {
+  std::vector<std::string> command = CommandLine(
+      options.program_dir, job, resume && !job.resume_args.empty() ? job.resume_args : job.args);
+  std::vector<char*> argv = ArgumentPointers(command);
+
+  const std::string log = LogPath(options, job).string();
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_APPEND, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  pid_t pid = 0;
+  const int status = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
+  if (status != 0) throw UserError(command[0] + ": cannot start (is the project built?)");
+  return pid;
+}
+
+// The complete marker exists and, for a summary that says whether its run finished (train_ppo
+// writes one when stopped too), says so.
+bool Complete(const StudyJob& job) {
+  if (!std::filesystem::exists(job.complete_marker)) return false;
+  if (job.complete_marker.extension() != ".json") return true;
+  std::ifstream in(job.complete_marker);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  return !summary.is_discarded() && summary.value("finished", true);
+}
+
+// The last non-empty line of `text`.
+std::string LastLine(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::string last;
+  while (std::getline(in, line)) {
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  }
+  return last;
+}
+
+// The last non-empty line of a job's log, to say why it failed.
+std::string LastLogLine(const std::filesystem::path& log) {
+  std::ifstream in(log);
+  return LastLine(std::string(std::istreambuf_iterator<char>(in), {}));
+}
+
+class Scheduler {
+ public:
+  Scheduler(const std::vector<StudyJob>& jobs, const JobRunnerOptions& options)
+      : jobs_(jobs), options_(options), states_(jobs.size(), JobState::kPending) {
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (Complete(jobs_[i])) {
+        states_[i] = JobState::kDone;
+        ++summary_.skipped;
+      } else {
+        remaining_s_ += jobs_[i].estimated_s;
+      }
+    }
+  }
+
+  JobRunSummary Run() {
+    std::filesystem::create_directories(options_.log_dir);
+    const StopFlag stop_flag;
+    ProgressBar progress("study", static_cast<std::int64_t>(remaining_s_), "work-s");
+    bool stop_sent = false;
+    while (AnyLeft()) {
+      if (StopFlag::StopRequested() && !stop_sent) {
+        for (const auto& [pid, index] : running_) kill(pid, SIGTERM);
+        stop_sent = true;
+        summary_.stopped = true;
+      }
+      if (!summary_.stopped) LaunchReady();
+      if (running_.empty()) break;  // nothing runnable: blocked by failures, or stopped
+      Reap();
+      progress.Update(static_cast<std::int64_t>(DoneSeconds()),
+                      {{"running", std::to_string(running_.size())},
+                       {"done", std::to_string(summary_.finished)},
+                       {"failed", std::to_string(summary_.failed)}});
+      std::this_thread::sleep_for(kPollInterval);
+    }
+    progress.Finish();
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (states_[i] == JobState::kPending && !summary_.stopped) ++summary_.failed;
+    }
+    return summary_;
+  }
+
+ private:
+  bool AnyLeft() const {
+    return std::any_of(states_.begin(), states_.end(), [](JobState s) {
+      return s == JobState::kPending || s == JobState::kRunning;
+    });
+  }
+
+  bool Ready(std::size_t i) const {
+    return std::all_of(jobs_[i].dependencies.begin(), jobs_[i].dependencies.end(),
+                       [&](std::size_t d) { return states_[d] == JobState::kDone; });
+  }
+
+  bool Blocked(std::size_t i) const {
+    return std::any_of(jobs_[i].dependencies.begin(), jobs_[i].dependencies.end(),
+                       [&](std::size_t d) { return states_[d] == JobState::kFailed; });
+  }
+
+  // Starts ready jobs, the longest first, while fewer than `jobs` run.
+  void LaunchReady() {
+    std::vector<std::size_t> ready;
+    for (std::size_t i = 0; i < jobs_.size(); ++i) {
+      if (states_[i] != JobState::kPending) continue;
+      if (Blocked(i)) {
+        states_[i] = JobState::kFailed;
+        ++summary_.failed;
+        Say("skipped " + jobs_[i].id + ": a job it needs failed");
+      } else if (Ready(i)) {
+        ready.push_back(i);
+      }
+    }
+    std::stable_sort(ready.begin(), ready.end(), [&](std::size_t a, std::size_t b) {
+      return jobs_[a].estimated_s > jobs_[b].estimated_s;
+    });
+    for (const std::size_t i : ready) {
+      if (static_cast<int>(running_.size()) >= options_.jobs) break;
+      const bool resume =
+          !jobs_[i].resume_marker.empty() && std::filesystem::exists(jobs_[i].resume_marker);
+      running_[Launch(jobs_[i], resume, options_)] = i;
+      started_[i] = std::chrono::steady_clock::now();
+      states_[i] = JobState::kRunning;
+      Say((resume ? "resumed " : "started ") + jobs_[i].id);
+    }
+  }
+
+  void Reap() {
+    int status = 0;
+    for (pid_t pid = waitpid(-1, &status, WNOHANG); pid > 0; pid = waitpid(-1, &status, WNOHANG)) {
+      const auto entry = running_.find(pid);
+      if (entry == running_.end()) continue;
+      const std::size_t i = entry->second;
+      running_.erase(entry);
+      const StudyJob& job = jobs_[i];
+      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && Complete(job);
+      if (ok) {
+        states_[i] = JobState::kDone;
+        ++summary_.finished;
+        done_s_ += job.estimated_s;
+        Say("finished " + job.id + " in " + FormatDuration(SecondsSince(started_[i])));
+      } else if (summary_.stopped) {
+        states_[i] = JobState::kPending;  // interrupted on request: resumes next time
+        Say("stopped " + job.id + " (resumes on the next run)");
+      } else {
+        states_[i] = JobState::kFailed;
+        ++summary_.failed;
+        Say("failed " + job.id + " (" + LogPath(options_, job).string() +
+            "): " + LastLogLine(LogPath(options_, job)));
+      }
+    }
+  }
+
+  double DoneSeconds() const {
+    double done = done_s_;
+    for (const auto& [pid, i] : running_) {
+      done += std::min(SecondsSince(started_.at(i)), kMaxRunningShare * jobs_[i].estimated_s);
+    }
+    return done;
+  }
+
+  static void Say(const std::string& line) { std::fprintf(stderr, "study: %s\n", line.c_str()); }
+
+  const std::vector<StudyJob>& jobs_;
+  const JobRunnerOptions& options_;
+  std::vector<JobState> states_;
+  std::map<pid_t, std::size_t> running_;
+  std::map<std::size_t, std::chrono::steady_clock::time_point> started_;
+  double remaining_s_ = 0.0;
+  double done_s_ = 0.0;
+  JobRunSummary summary_;
+};
+
+}  // namespace
+
+void CheckJobConfigurations(const std::vector<StudyJob>& jobs,
+                            const std::filesystem::path& program_dir) {
+  for (const StudyJob& job : jobs) {
+    if (!job.check_configuration || Complete(job)) continue;
+    std::vector<std::string> args = job.args;
+    args.emplace_back("--print-config");
+    const auto [status, output] = RunCapturingOutput(CommandLine(program_dir, job, args));
+    if (status != 0) {
+      const std::size_t error = output.rfind("error: ");
+      const std::string message =
+          error == std::string::npos ? LastLine(output) : output.substr(error + 7);
+      throw UserError("job " + job.id + ": " + job.program + ": " +
+                      message.substr(0, message.find('\n')));
+    }
+  }
+}
+
+JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions& options) {
+  return Scheduler(jobs, options).Run();
+}
+
+std::filesystem::path ProgramFolder() {
+  return std::filesystem::read_symlink("/proc/self/exe").parent_path();
+}
+
+}  // namespace colav

@@ -1,0 +1,241 @@
+#include "eval/study/study_report.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "src/atomic_file.h"
+#include "src/rate_interval.h"
+#include "src/statistics.h"
+#include "src/yaml_file.h"
+
+namespace colav {
+namespace {
+
+constexpr std::uint64_t kBootstrapSeed = 0;  // fixed: the same results give the same report
+const char* const kBaselineConfig = "baseline";
+
+std::vector<double> Pooled(const std::vector<const ModelEpisodes*>& seeds,
+                           const std::string& metric) {
+  std::vector<double> all;
+  for (const ModelEpisodes* seed : seeds) {
+    const std::vector<double>& values = seed->at(metric);
+    all.insert(all.end(), values.begin(), values.end());
+  }
+  return all;
+}
+
+// Rates and progress are bounded: their intervals must stay inside [0, 100] %.
+bool IsBounded(const StudyMetric& metric) { return metric.is_rate || metric.name == "progress"; }
+
+// Over seeds when there are several (the spread that matters between recipes), otherwise over
+// the scenarios of the one model; intervals of bounded metrics stay in range.
+MetricEstimate Estimate(const std::vector<const ModelEpisodes*>& seeds, const StudyMetric& metric) {
+  const std::vector<double> pooled = Pooled(seeds, metric.name);
+  const bool over_seeds = seeds.size() >= 2;
+  std::vector<double> values = pooled;
+  if (over_seeds) {
+    values.clear();
+    for (const ModelEpisodes* seed : seeds) values.push_back(Mean(seed->at(metric.name)));
+  }
+  MetricEstimate estimate{Mean(values), {}, "", InterquartileMean(pooled)};
+  if (metric.is_rate && !over_seeds) {
+    const auto successes = static_cast<std::int64_t>(
+        std::llround(estimate.mean / metric.scale * static_cast<double>(pooled.size())));
+    const Interval rate = WilsonInterval(successes, static_cast<std::int64_t>(pooled.size()));
+    estimate.ci = {rate.low * metric.scale, rate.high * metric.scale};
+    estimate.method = "Wilson";
+  } else if (IsBounded(metric)) {
+    estimate.ci = PercentileBootstrapMean(values, kBootstrapSeed);
+    estimate.method = "bootstrap";
+  } else {
+    const MeanConfidenceInterval summary = Summarise(values);
+    estimate.ci = {summary.low, summary.high};
+    estimate.method = "t";
+  }
+  if (over_seeds) estimate.method += " over seeds";
+  return estimate;
+}
+
+// scores[seed][scenario], higher is better.
+SeedScores Scores(const std::vector<const ModelEpisodes*>& seeds, const StudyMetric& metric) {
+  SeedScores scores;
+  for (const ModelEpisodes* seed : seeds) {
+    scores.push_back(seed->at(metric.name));
+    if (!metric.higher_is_better) {
+      for (double& value : scores.back()) value = -value;
+    }
+  }
+  return scores;
+}
+
+// The models of the set as (name, seeds): configurations gather their seed models.
+std::vector<std::pair<std::string, std::vector<const ModelEpisodes*>>> Groups(
+    const StudySpec& spec, const ScenarioSetResults& results) {
+  std::vector<std::pair<std::string, std::vector<const ModelEpisodes*>>> groups;
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    std::vector<const ModelEpisodes*> seeds;
+    seeds.reserve(static_cast<std::size_t>(spec.ppo_seeds));
+    for (int k = 0; k < spec.ppo_seeds; ++k) {
+      seeds.push_back(&results.models.at(SeedModelName(config.name, k)));
+    }
+    groups.emplace_back(config.name, seeds);
+  }
+  for (const auto& [name, episodes] : results.models) {
+    if (name.rfind("ref.", 0) == 0) groups.push_back({name, {&episodes}});
+  }
+  return groups;
+}
+
+std::string Cell(const MetricEstimate& estimate) {
+  return fmt::format("{:.1f} [{:.1f}, {:.1f}]", estimate.mean, estimate.ci.low, estimate.ci.high);
+}
+
+std::string Cell(const ImprovementEstimate& estimate) {
+  return fmt::format("{:.2f} [{:.2f}, {:.2f}]", estimate.probability, estimate.ci.low,
+                     estimate.ci.high);
+}
+
+nlohmann::json ToJson(const ScenarioSetReport& report) {
+  nlohmann::json json = {{"episodes", report.episodes}};
+  for (const ModelSummary& model : report.models) {
+    nlohmann::json metrics;
+    for (const auto& [name, e] : model.metrics) {
+      metrics[name] = {{"mean", e.mean},
+                       {"low", e.ci.low},
+                       {"high", e.ci.high},
+                       {"interval", e.method},
+                       {"iqm", e.iqm}};
+    }
+    json["models"].push_back({{"name", model.name}, {"seeds", model.seeds}, {"metrics", metrics}});
+  }
+  json["probability_of_improvement"] = nlohmann::json::array();
+  for (const ImprovementSummary& row : report.improvements) {
+    nlohmann::json metrics;
+    for (const auto& [name, e] : row.metrics) {
+      metrics[name] = {{"probability", e.probability}, {"low", e.ci.low}, {"high", e.ci.high}};
+    }
+    json["probability_of_improvement"].push_back(
+        {{"model", row.model}, {"over", row.over}, {"metrics", metrics}});
+  }
+  return json;
+}
+
+void ModelTable(std::ostringstream& md, const ScenarioSetReport& report) {
+  md << "| model | seeds |";
+  for (const StudyMetric& metric : StudyMetrics()) md << ' ' << metric.label << " |";
+  md << "\n|---|---|";
+  for (std::size_t i = 0; i < StudyMetrics().size(); ++i) md << "---|";
+  md << '\n';
+  for (const ModelSummary& model : report.models) {
+    md << "| " << model.name << " | " << model.seeds << " |";
+    for (const StudyMetric& metric : StudyMetrics()) {
+      md << ' ' << Cell(model.metrics.at(metric.name)) << " |";
+    }
+    md << '\n';
+  }
+  md << "\nIntervals: 95 %. Configurations with several seeds: over the training seeds' means, "
+        "percentile bootstrap for progress and rates, Student-t otherwise. Single agents: over the "
+        "scenarios, Wilson score for rates, percentile bootstrap for progress, Student-t "
+        "otherwise.\n";
+}
+
+void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
+  if (report.improvements.empty()) return;
+  md << "\nProbability of improvement: P(model better than the other on a random scenario and "
+        "training seed; ties count half), with a 95 % bootstrap interval over seeds and "
+        "scenarios. Above 0.5 with the whole interval: better.\n\n"
+        "| model | over | progress | cte | collisions |\n|---|---|---|---|---|\n";
+  for (const ImprovementSummary& row : report.improvements) {
+    md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
+       << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
+       << Cell(row.metrics.at("collision")) << " |\n";
+  }
+}
+
+// The paper's numbers beside ours, for the configurations the paper reports.
+void PaperTable(std::ostringstream& md, const ScenarioSetReport& report,
+                const std::filesystem::path& paper_results) {
+  if (paper_results.empty()) return;
+  const YAML::Node paper = LoadYamlFile(paper_results)["models"];
+  md << "\nThe paper's table beside ours (ours / paper):\n\n| model |";
+  for (const char* metric : {"progress", "cross_track_error", "duration", "collision"}) {
+    md << ' ' << metric << " |";
+  }
+  md << "\n|---|---|---|---|---|\n";
+  for (const ModelSummary& model : report.models) {
+    if (!paper[model.name]) continue;
+    md << "| " << model.name << " |";
+    for (const char* metric : {"progress", "cross_track_error", "duration", "collision"}) {
+      const YAML::Node theirs = paper[model.name][metric];
+      md << ' ' << Cell(model.metrics.at(metric)) << " / " << theirs["mean"].as<double>() << " ["
+         << theirs["low"].as<double>() << ", " << theirs["high"].as<double>() << "] |";
+    }
+    md << '\n';
+  }
+}
+
+}  // namespace
+
+ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
+                                       const std::string& reference_config) {
+  ScenarioSetReport report;
+  report.episodes = results.episodes;
+  const auto groups = Groups(spec, results);
+  for (const auto& [name, seeds] : groups) {
+    ModelSummary summary{name, static_cast<int>(seeds.size()), {}};
+    for (const StudyMetric& metric : StudyMetrics()) {
+      summary.metrics[metric.name] = Estimate(seeds, metric);
+    }
+    report.models.push_back(summary);
+  }
+  const auto reference = std::find_if(groups.begin(), groups.end(),
+                                      [&](const auto& g) { return g.first == reference_config; });
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    const auto& seeds = *std::find_if(groups.begin(), groups.end(),
+                                      [&](const auto& g) { return g.first == config.name; });
+    for (const auto& other : groups) {
+      const bool is_reference = reference != groups.end() && other.first == reference->first;
+      if (other.first == config.name || !(is_reference || other.first.rfind("ref.", 0) == 0)) {
+        continue;
+      }
+      ImprovementSummary row{config.name, other.first, {}};
+      for (const StudyMetric& metric : StudyMetrics()) {
+        row.metrics[metric.name] = ProbabilityOfImprovementInterval(
+            Scores(seeds.second, metric), Scores(other.second, metric), kBootstrapSeed);
+      }
+      report.improvements.push_back(row);
+    }
+  }
+  return report;
+}
+
+void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, double wall_s) {
+  const std::map<std::string, ScenarioSetResults> sets = ReadStudyResults(spec, out);
+  nlohmann::json json = {{"study", spec.name},
+                         {"seeds", spec.ppo_seeds},
+                         {"ppo_steps", spec.ppo_steps},
+                         {"wall_s", wall_s}};
+  std::ostringstream md;
+  md << "# Study " << spec.name << "\n\n"
+     << spec.ppo_configs.size() << " PPO configuration(s) x " << spec.ppo_seeds
+     << " training seed(s) of " << spec.ppo_steps
+     << " steps; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s)
+     << " s.\n";
+  for (const auto& [set, results] : sets) {
+    const ScenarioSetReport report = SummariseScenarioSet(spec, results, kBaselineConfig);
+    json["scenario_sets"][set] = ToJson(report);
+    md << "\n## " << (set == "paper" ? "The paper's test: " : "Test: ") << report.episodes
+       << " scenarios (master seed " << (set == "paper" ? std::uint64_t{0} : spec.evaluation.seed)
+       << ")\n\n";
+    ModelTable(md, report);
+    ImprovementTable(md, report);
+    if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);
+  }
+  WriteTextFileAtomically(out / "summary.json", json.dump(2) + "\n");
+  WriteTextFileAtomically(out / "REPORT.md", md.str());
+}
+
+}  // namespace colav

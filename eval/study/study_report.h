@@ -1,0 +1,51 @@
+// The study's report: each model's metrics with intervals (over training seeds for our PPO
+// configurations, over scenarios for single agents), the probability that one configuration beats
+// another on a random scenario and seed, and the paper's table beside ours. Written as
+// OUT/REPORT.md and OUT/summary.json (every figure of the report, machine-readable).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "eval/study/study_results.h"
+#include "src/seed_aggregates.h"
+
+namespace colav {
+
+struct MetricEstimate {
+  double mean = 0.0;
+  Interval ci;
+  std::string method;  ///< "t over seeds", "Wilson", "bootstrap", "t"
+  double iqm = 0.0;    ///< interquartile mean of every episode of every seed
+};
+
+struct ModelSummary {
+  std::string name;  ///< configuration name, or the single model's name
+  int seeds = 1;
+  std::map<std::string, MetricEstimate> metrics;
+};
+
+struct ImprovementSummary {
+  std::string model;
+  std::string over;
+  std::map<std::string, ImprovementEstimate> metrics;
+};
+
+struct ScenarioSetReport {
+  int episodes = 0;
+  std::vector<ModelSummary> models;
+  std::vector<ImprovementSummary> improvements;
+};
+
+/// The report of one scenario set: configurations (models "<config>.seed_<k>") summarised over
+/// their seeds, other models over scenarios; the probability of improvement of every
+/// configuration over `reference_config` (if present) and over each single model.
+ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
+                                       const std::string& reference_config);
+
+/// Writes OUT/summary.json and OUT/REPORT.md from the evaluations in OUT/eval/.
+void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, double wall_s);
+
+}  // namespace colav

@@ -1,0 +1,41 @@
+// The per-episode results of a study's evaluations, arranged for statistics: for each scenario
+// set ("study": the study's scenarios, "paper": the paper's 100) and each model, one row per
+// scenario in the same order for every model (paired).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "eval/study/job_graph.h"
+
+namespace colav {
+
+/// What the report measures, one column of evaluate's episodes.csv each.
+struct StudyMetric {
+  std::string name;    ///< key in summary.json: "progress", "collision", ...
+  std::string column;  ///< column of episodes.csv
+  std::string label;   ///< table heading
+  double scale;        ///< 100 for fractions shown as %
+  bool higher_is_better;
+  bool is_rate;  ///< 0/1 per episode: Wilson intervals
+};
+
+/// progress, cross_track_error, duration, collision, goal.
+const std::vector<StudyMetric>& StudyMetrics();
+
+/// values[metric name][scenario] of one model.
+using ModelEpisodes = std::map<std::string, std::vector<double>>;
+
+struct ScenarioSetResults {
+  int episodes = 0;
+  std::map<std::string, ModelEpisodes> models;  ///< by model name ("baseline.seed_0", "ref.x")
+};
+
+/// Reads eval/<group>/episodes.csv of every evaluation group; a missing or malformed file, or
+/// groups of one scenario set with other scenarios, is a UserError naming the file.
+std::map<std::string, ScenarioSetResults> ReadStudyResults(const StudySpec& spec,
+                                                           const std::filesystem::path& out);
+
+}  // namespace colav

@@ -1,0 +1,248 @@
+#include "eval/study/study_spec.h"
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cmath>
+#include <regex>
+#include <set>
+
+#include "src/error.h"
+#include "src/yaml_file.h"
+
+namespace colav {
+namespace {
+
+// Errors name the file and the key path ("studies/x.yaml: ppo.configs.best.locked: ...").
+class Reader {
+ public:
+  explicit Reader(std::filesystem::path path) : path_(std::move(path)) {}
+
+  [[noreturn]] void Fail(const std::string& key, const std::string& problem) const {
+    throw UserError(path_.string() + ": " + key + ": " + problem);
+  }
+
+  // `allowed` empty: any key (a mapping of names to entries).
+  void RequireMap(const YAML::Node& node, const std::string& key,
+                  const std::set<std::string>& allowed) const {
+    if (!node.IsMap()) Fail(key, "expects a mapping");
+    for (const auto& item : node) {
+      const std::string name = item.first.as<std::string>();
+      if (!allowed.empty() && allowed.count(name) == 0) {
+        Fail(key.empty() ? name : fmt::format("{}.{}", key, name), "unknown key");
+      }
+    }
+  }
+
+  std::string Name(const YAML::Node& node, const std::string& key) const {
+    std::string name = String(node, key);
+    static const std::regex kSafe("[A-Za-z0-9][A-Za-z0-9_.-]*");
+    if (!std::regex_match(name, kSafe)) Fail(key, "'" + name + "' is not a safe folder name");
+    return name;
+  }
+
+  std::string String(const YAML::Node& node, const std::string& key) const {
+    if (!node.IsScalar()) Fail(key, "expects a text value");
+    return node.Scalar();
+  }
+
+  std::string Choice(const YAML::Node& node, const std::string& key,
+                     const std::vector<std::string>& choices) const {
+    std::string value = String(node, key);
+    if (std::find(choices.begin(), choices.end(), value) == choices.end()) {
+      Fail(key, "'" + value + "' is not one of the allowed values");
+    }
+    return value;
+  }
+
+  std::int64_t Integer(const YAML::Node& node, const std::string& key, std::int64_t min,
+                       std::int64_t max) const {
+    const std::string text = String(node, key);
+    double value = 0.0;
+    try {
+      std::size_t used = 0;
+      value = std::stod(text, &used);
+      if (used != text.size()) value = NAN;
+    } catch (const std::exception&) {
+      value = NAN;
+    }
+    if (!std::isfinite(value) || std::floor(value) != value || value < static_cast<double>(min) ||
+        value > static_cast<double>(max)) {
+      Fail(key, "expects a whole number in [" + std::to_string(min) + ", " + std::to_string(max) +
+                    "], got '" + text + "'");
+    }
+    return static_cast<std::int64_t>(value);
+  }
+
+  bool Bool(const YAML::Node& node, const std::string& key) const {
+    const std::string text = String(node, key);
+    if (text != "true" && text != "false") Fail(key, "expects true or false, got '" + text + "'");
+    return text == "true";
+  }
+
+  // A mapping of program configuration keys to values, kept as "key=value" overrides; the
+  // program checks the keys and values (before the study starts: see ValidateJobs).
+  Overrides OverridesOf(const YAML::Node& node, const std::string& key) const {
+    Overrides overrides;
+    if (!node) return overrides;
+    if (!node.IsMap()) Fail(key, "expects a mapping of configuration keys to values");
+    for (const auto& item : node) {
+      const std::string name = item.first.as<std::string>();
+      const std::string value = String(item.second, fmt::format("{}.{}", key, name));
+      overrides.push_back(fmt::format("{}={}", name, value));
+    }
+    return overrides;
+  }
+
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+std::vector<VaeSpec> ReadVaes(const Reader& reader, const YAML::Node& node) {
+  std::vector<VaeSpec> vaes;
+  if (!node) return vaes;
+  reader.RequireMap(node, "vaes", {});
+  for (const auto& item : node) {
+    VaeSpec vae;
+    const std::string key = "vaes." + item.first.as<std::string>();
+    vae.name = reader.Name(item.first, key);
+    reader.RequireMap(item.second, key, {"model", "seeds", "set"});
+    if (item.second["model"]) {
+      vae.model = reader.Choice(item.second["model"], key + ".model", {"shallow", "deep"});
+    }
+    if (item.second["seeds"]) {
+      vae.seeds = static_cast<int>(reader.Integer(item.second["seeds"], key + ".seeds", 1, 1000));
+    }
+    vae.overrides = reader.OverridesOf(item.second["set"], key + ".set");
+    vaes.push_back(vae);
+  }
+  return vaes;
+}
+
+PpoConfigSpec ReadPpoConfig(const Reader& reader, const YAML::Node& name, const YAML::Node& node,
+                            const std::vector<VaeSpec>& vaes) {
+  PpoConfigSpec config;
+  const std::string key = "ppo.configs." + name.as<std::string>();
+  config.name = reader.Name(name, key);
+  reader.RequireMap(node, key, {"extractor", "vae", "locked", "set"});
+  if (node["extractor"]) {
+    config.extractor = reader.Choice(node["extractor"], key + ".extractor",
+                                     {"baseline", "vae-shallow", "vae-deep"});
+  }
+  if (node["locked"]) config.locked = reader.Bool(node["locked"], key + ".locked");
+  config.overrides = reader.OverridesOf(node["set"], key + ".set");
+  if (config.extractor == "baseline") {
+    if (node["vae"]) reader.Fail(key + ".vae", "the baseline extractor uses no VAE");
+    return config;
+  }
+  if (!node["vae"]) reader.Fail(key + ".vae", "missing: " + config.extractor + " needs a VAE");
+  config.vae = reader.String(node["vae"], key + ".vae");
+  const auto vae = std::find_if(vaes.begin(), vaes.end(),
+                                [&](const VaeSpec& v) { return v.name == config.vae; });
+  if (vae == vaes.end()) reader.Fail(key + ".vae", "no VAE named '" + config.vae + "' in vaes");
+  if ("vae-" + vae->model != config.extractor) {
+    reader.Fail(key + ".vae", "VAE '" + config.vae + "' is " + vae->model + ", the extractor " +
+                                  config.extractor);
+  }
+  return config;
+}
+
+void ReadPpo(const Reader& reader, const YAML::Node& node, StudySpec& spec) {
+  if (!node) reader.Fail("ppo", "missing: a study trains at least one PPO configuration");
+  reader.RequireMap(node, "ppo", {"seeds", "steps", "set", "configs"});
+  if (node["seeds"]) {
+    spec.ppo_seeds = static_cast<int>(reader.Integer(node["seeds"], "ppo.seeds", 1, 1000));
+  }
+  if (node["steps"]) {
+    spec.ppo_steps = reader.Integer(node["steps"], "ppo.steps", 1, 1'000'000'000);
+  }
+  spec.ppo_overrides = reader.OverridesOf(node["set"], "ppo.set");
+  if (!node["configs"] || node["configs"].size() == 0) {
+    reader.Fail("ppo.configs", "missing: name at least one PPO configuration");
+  }
+  reader.RequireMap(node["configs"], "ppo.configs", {});
+  for (const auto& item : node["configs"]) {
+    spec.ppo_configs.push_back(ReadPpoConfig(reader, item.first, item.second, spec.vaes));
+  }
+}
+
+// A file named relative to the study file's folder; it must exist.
+std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
+                                   const std::string& key) {
+  std::filesystem::path file = reader.String(node, key);
+  if (file.is_relative()) file = reader.path().parent_path() / file;
+  if (!std::filesystem::is_regular_file(file)) reader.Fail(key, file.string() + ": no such file");
+  return file;
+}
+
+EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
+  EvaluationSpec evaluation;
+  if (!node) return evaluation;
+  reader.RequireMap(node, "evaluation",
+                    {"episodes", "seed", "paper_episodes", "reference_agents", "paper_results"});
+  if (node["episodes"]) {
+    evaluation.episodes =
+        static_cast<int>(reader.Integer(node["episodes"], "evaluation.episodes", 1, 100000));
+  }
+  if (node["seed"]) {
+    evaluation.seed = static_cast<std::uint64_t>(
+        reader.Integer(node["seed"], "evaluation.seed", 0, 9'007'199'254'740'992));
+  }
+  if (node["paper_episodes"]) {
+    evaluation.paper_episodes = static_cast<int>(
+        reader.Integer(node["paper_episodes"], "evaluation.paper_episodes", 0, 100000));
+  }
+  if (node["paper_results"]) {
+    evaluation.paper_results =
+        ExistingFile(reader, node["paper_results"], "evaluation.paper_results");
+  }
+  if (const YAML::Node agents = node["reference_agents"]) {
+    if (!agents.IsSequence()) reader.Fail("evaluation.reference_agents", "expects a list of files");
+    for (std::size_t i = 0; i < agents.size(); ++i) {
+      const std::string key = "evaluation.reference_agents[" + std::to_string(i) + "]";
+      evaluation.reference_agents.push_back(ExistingFile(reader, agents[i], key));
+    }
+  }
+  return evaluation;
+}
+
+}  // namespace
+
+StudySpec LoadStudySpec(const std::filesystem::path& path) {
+  const YAML::Node root = LoadYamlFile(path);
+  const Reader reader(path);
+  reader.RequireMap(root, "", {"name", "dataset", "vaes", "ppo", "evaluation"});
+  StudySpec spec;
+  spec.name = root["name"] ? reader.Name(root["name"], "name") : path.stem().string();
+  spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
+  spec.vaes = ReadVaes(reader, root["vaes"]);
+  ReadPpo(reader, root["ppo"], spec);
+  spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
+  return spec;
+}
+
+StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds) {
+  if (seeds > 0) spec.ppo_seeds = seeds;
+  if (only.empty()) return spec;
+  std::vector<PpoConfigSpec> configs;
+  std::set<std::string> used_vaes;
+  for (const std::string& name : only) {
+    const auto config = std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                                     [&](const PpoConfigSpec& c) { return c.name == name; });
+    if (config == spec.ppo_configs.end()) {
+      throw UserError("--only " + name + ": the study has no PPO configuration of that name");
+    }
+    configs.push_back(*config);
+    used_vaes.insert(config->vae);
+  }
+  spec.ppo_configs = configs;
+  spec.vaes.erase(std::remove_if(spec.vaes.begin(), spec.vaes.end(),
+                                 [&](const VaeSpec& v) { return used_vaes.count(v.name) == 0; }),
+                  spec.vaes.end());
+  return spec;
+}
+
+}  // namespace colav

@@ -1,0 +1,76 @@
+// A study file: the dataset, the VAEs, the PPO configurations times training seeds, and the
+// evaluations of one experiment (interfaces.md, section "study"). Parsed and checked completely
+// before any job starts; every problem is a one-line UserError naming the file and the key.
+//
+//   name: quickstart
+//   dataset: {dataset.sim_scans: 10000}            # --set overrides of generate_dataset
+//   vaes:
+//     shallow: {model: shallow, seeds: 1, set: {vae.beta: 1.0}}
+//   ppo:
+//     seeds: 5
+//     steps: 3000000
+//     set: {}                                       # overrides of every configuration
+//     configs:
+//       shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
+//       baseline: {extractor: baseline}
+//   evaluation:
+//     episodes: 1000                                # scenarios of the study's own table
+//     seed: 1
+//     paper_episodes: 100                           # the paper's table (master seed 0); 0: none
+//     reference_agents: [../shared/reference-agents/shallow_locked_3m.pt]
+//     paper_results: paper_results.yaml              # the paper's table, printed beside ours
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace colav {
+
+/// "key=value" overrides passed to a program with --set, in file order.
+using Overrides = std::vector<std::string>;
+
+struct VaeSpec {
+  std::string name;
+  std::string model = "shallow";  ///< shallow | deep
+  int seeds = 1;
+  Overrides overrides;
+};
+
+struct PpoConfigSpec {
+  std::string name;
+  std::string extractor = "baseline";  ///< baseline | vae-shallow | vae-deep
+  std::string vae;                     ///< name of the VAE whose encoders it uses
+  bool locked = true;
+  Overrides overrides;  ///< after the study-wide ones
+};
+
+struct EvaluationSpec {
+  int episodes = 1000;
+  std::uint64_t seed = 1;
+  int paper_episodes = 100;  ///< on master seed 0, for the paper's table; 0 = none
+  std::vector<std::filesystem::path> reference_agents;
+  std::filesystem::path paper_results;  ///< the paper's table (YAML); empty = none
+};
+
+struct StudySpec {
+  std::string name;
+  Overrides dataset_overrides;
+  std::vector<VaeSpec> vaes;
+  int ppo_seeds = 5;
+  std::int64_t ppo_steps = 3'000'000;
+  Overrides ppo_overrides;
+  std::vector<PpoConfigSpec> ppo_configs;
+  EvaluationSpec evaluation;
+};
+
+/// The study of `path`; relative reference-agent paths are taken from the study file's folder.
+StudySpec LoadStudySpec(const std::filesystem::path& path);
+
+/// The study restricted to the PPO configurations `only` (and the VAEs they use), with
+/// `seeds` training seeds when > 0. An unknown name is a UserError.
+StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
+
+}  // namespace colav

@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# The study runner end to end with the real programs at a tiny budget: a bad program key is
+# refused before any work; 2 PPO configurations x 2 seeds (one with a VAE) run to a report; a
+# second invocation skips every job; a study stopped by SIGTERM during a PPO run exits 130 and the
+# same command then finishes it.
+#   study_test.sh BIN_DIR WORK_DIR
+set -euo pipefail
+BIN=$(cd "$1" && pwd)
+WORK=$2
+rm -rf "$WORK"
+mkdir -p "$WORK"
+WORK=$(cd "$WORK" && pwd)
+fail() { echo "study test: $*" >&2; exit 1; }
+
+cat >"$WORK/tiny.yaml" <<'YAML'
+name: tiny
+dataset: {dataset.sim_scans: 150, dataset.synthetic_scans: 150}
+vaes:
+  shallow: {model: shallow, seeds: 1, set: {training.epochs: 2, figures.enabled: false}}
+ppo:
+  seeds: 2
+  steps: 2048
+  set: {ppo.n_envs: 2, train.keep_checkpoints: false}
+  configs:
+    shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
+    baseline: {extractor: baseline}
+evaluation: {episodes: 6, seed: 3, paper_episodes: 4}
+YAML
+
+# A bad key of a program is refused before any job runs, naming the job and the key.
+sed -e 's/ppo.n_envs: 2/ppo.n_env: 2/' "$WORK/tiny.yaml" >"$WORK/bad.yaml"
+status=0
+"$BIN/study" "$WORK/bad.yaml" --out "$WORK/bad" 2>"$WORK/bad.err" >/dev/null || status=$?
+[ $status -eq 2 ] || fail "a bad key gave exit status $status, not 2"
+[ "$(wc -l <"$WORK/bad.err")" -eq 1 ] && grep -q "job ppo/shallow_locked/seed_0: train_ppo: .*ppo.n_env" \
+  "$WORK/bad.err" || { cat "$WORK/bad.err"; fail "bad key message"; }
+[ ! -e "$WORK/bad/data" ] || fail "a job ran before the study was checked"
+
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
+  { tail -20 "$WORK/first.err"; fail "first run failed"; }
+grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
+for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
+  ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt \
+  eval/study-ours/episodes.csv eval/paper-ours/episodes.csv; do
+  [ -s "$WORK/run/$file" ] || fail "missing $file"
+done
+grep -q "8 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+/usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
+import json, sys
+s = json.load(open(sys.argv[1]))
+for name, episodes in (("study", 6), ("paper", 4)):
+    sset = s["scenario_sets"][name]
+    assert sset["episodes"] == episodes
+    models = {m["name"]: m for m in sset["models"]}
+    assert set(models) == {"shallow_locked", "baseline"}, models.keys()
+    for m in models.values():
+        assert m["seeds"] == 2
+        c = m["metrics"]["collision"]
+        assert 0 <= c["low"] <= c["mean"] <= c["high"] <= 100
+        assert c["interval"] == "bootstrap over seeds"
+    poi = sset["probability_of_improvement"]
+    assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
+    assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
+PY
+
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
+  fail "second run failed"
+grep -q "0 jobs run, 8 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+
+# Stopped in the middle of a longer PPO run, then resumed by the same command.
+sed -e 's/steps: 2048/steps: 400000/' "$WORK/tiny.yaml" >"$WORK/long.yaml"
+"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --only baseline --seeds 1 --jobs 1 \
+  >"$WORK/long1.out" 2>"$WORK/long1.err" &
+pid=$!
+for _ in $(seq 300); do
+  [ -f "$WORK/long/ppo/baseline/seed_0/training_state.pt" ] && break
+  sleep 0.1
+done
+[ -f "$WORK/long/ppo/baseline/seed_0/training_state.pt" ] || { kill $pid; fail "no checkpoint"; }
+kill -TERM $pid
+status=0
+wait $pid || status=$?
+[ $status -eq 130 ] || { cat "$WORK/long1.err"; fail "stopped study exited $status, not 130"; }
+grep -q '"finished": false' "$WORK/long/ppo/baseline/seed_0/summary.json" ||
+  fail "the PPO run finished before the stop"
+"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --only baseline --seeds 1 --jobs 1 \
+  >"$WORK/long2.out" 2>"$WORK/long2.err" || { tail "$WORK/long2.err"; fail "resume failed"; }
+grep -q "resumed ppo/baseline/seed_0" "$WORK/long2.err" || fail "the PPO run was not resumed"
+[ -s "$WORK/long/REPORT.md" ] || fail "no report after the resume"
+echo "study test passed"

@@ -1,0 +1,87 @@
+#include "eval/study/job_graph.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+
+#include "tests/src/test_util.h"
+
+namespace colav {
+namespace {
+
+using testing_util::TemporaryFolder;
+
+StudySpec TinySpec(const TemporaryFolder& folder) {
+  StudySpec spec;
+  spec.name = "tiny";
+  spec.vaes = {{"shallow", "shallow", 2, {}}};
+  spec.ppo_seeds = 3;
+  spec.ppo_steps = 4096;
+  spec.ppo_configs = {{"locked", "vae-shallow", "shallow", true, {}},
+                      {"log", "vae-shallow", "shallow", false, {"env.closeness=log"}},
+                      {"baseline", "baseline", "", true, {}}};
+  spec.evaluation.episodes = 20;
+  spec.evaluation.paper_episodes = 5;
+  const std::filesystem::path agent = folder / "agent.pt";
+  std::ofstream(agent) << "x";
+  std::ofstream(agent.string() + ".yaml") << "env:\n  closeness: log\n";
+  spec.evaluation.reference_agents = {agent};
+  return spec;
+}
+
+const StudyJob& Find(const std::vector<StudyJob>& jobs, const std::string& id) {
+  const auto job =
+      std::find_if(jobs.begin(), jobs.end(), [&](const StudyJob& j) { return j.id == id; });
+  EXPECT_NE(job, jobs.end()) << id;
+  return *job;
+}
+
+bool Has(const std::vector<std::string>& args, const std::vector<std::string>& run) {
+  return std::search(args.begin(), args.end(), run.begin(), run.end()) != args.end();
+}
+
+TEST(JobGraphTest, JobsDependenciesAndArguments) {
+  const TemporaryFolder folder;
+  const std::vector<StudyJob> jobs = BuildJobGraph(TinySpec(folder), "/s");
+  // data, 1 VAE, 3 x 3 PPO runs, evaluation groups: study ours (linear, log), study reference,
+  // paper ours (linear, log), paper reference.
+  EXPECT_EQ(jobs.size(), 1U + 1U + 9U + 6U);
+  for (std::size_t i = 0; i < jobs.size(); ++i) {
+    for (const std::size_t d : jobs[i].dependencies) EXPECT_LT(d, i) << jobs[i].id;
+  }
+  const StudyJob& run = Find(jobs, "ppo/locked/seed_2");
+  EXPECT_EQ(run.program, "train_ppo");
+  // PPO seed 2 uses VAE seed 2 mod 2 = 0; seeds and steps as the study says.
+  EXPECT_TRUE(Has(run.args, {"--encoder", "/s/vae/shallow/seed_0/encoder.pt", "--locked"}));
+  EXPECT_TRUE(Has(run.args, {"--steps", "4096", "--seed", "2", "--out", "/s/ppo/locked/seed_2"}));
+  EXPECT_EQ(run.resume_args, (std::vector<std::string>{"--resume", "/s/ppo/locked/seed_2"}));
+  EXPECT_EQ(jobs[run.dependencies.at(0)].id, "vae/shallow");
+  EXPECT_TRUE(Find(jobs, "ppo/baseline/seed_0").dependencies.empty());
+  EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--unlocked"}));
+  EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--set", "env.closeness=log"}));
+}
+
+TEST(JobGraphTest, EvaluationsGroupModelsByTheirObservationSettings) {
+  const TemporaryFolder folder;
+  const std::vector<EvaluationGroup> groups = EvaluationGroups(TinySpec(folder), "/s");
+  ASSERT_EQ(groups.size(), 6U);
+  EXPECT_EQ(groups[0].name, "study-ours");
+  EXPECT_EQ(groups[0].models.size(), 6U);  // locked and baseline, 3 seeds each
+  EXPECT_EQ(groups[0].models[0], "locked.seed_0");
+  EXPECT_EQ(groups[1].name, "study-ours-log");
+  EXPECT_EQ(groups[1].overrides, Overrides{"env.closeness=log"});
+  EXPECT_EQ(groups[2].name, "study-reference-log");  // from the agent's sidecar
+  EXPECT_EQ(groups[2].models, std::vector<std::string>{"ref.agent"});
+  EXPECT_EQ(groups[3].name, "paper-ours");
+  EXPECT_EQ(groups[3].episodes, 5);
+  EXPECT_EQ(groups[3].seed, 0U);
+  const std::vector<StudyJob> jobs = BuildJobGraph(TinySpec(folder), "/s");
+  const StudyJob& evaluation = Find(jobs, "eval/study-ours-log");
+  EXPECT_EQ(evaluation.dependencies.size(), 3U);  // only the runs it evaluates
+  EXPECT_TRUE(Has(evaluation.args, {"--episodes", "20", "--seed", "1"}));
+  EXPECT_TRUE(Find(jobs, "eval/study-reference-log").dependencies.empty());
+}
+
+}  // namespace
+}  // namespace colav

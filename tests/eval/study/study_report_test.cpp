@@ -1,0 +1,73 @@
+#include "eval/study/study_report.h"
+
+#include <gtest/gtest.h>
+
+namespace colav {
+namespace {
+
+// One model's episodes: every metric's value per scenario (progress and rates in %).
+ModelEpisodes Episodes(std::vector<double> progress, std::vector<double> cte,
+                       std::vector<double> collision) {
+  const std::vector<double> constant(progress.size(), 500.0);
+  return {{"progress", progress},
+          {"cross_track_error", cte},
+          {"duration", constant},
+          {"collision", collision},
+          {"goal", std::vector<double>(progress.size(), 0.0)}};
+}
+
+TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
+  StudySpec spec;
+  spec.ppo_seeds = 2;
+  spec.ppo_configs = {{"better", "baseline", "", true, {}}, {"baseline", "baseline", "", true, {}}};
+  ScenarioSetResults results;
+  results.episodes = 4;
+  results.models["better.seed_0"] = Episodes({100, 100, 100, 100}, {10, 10, 10, 10}, {0, 0, 0, 0});
+  results.models["better.seed_1"] = Episodes({90, 90, 90, 90}, {20, 20, 20, 20}, {0, 0, 0, 100});
+  results.models["baseline.seed_0"] = Episodes({80, 80, 80, 80}, {30, 30, 30, 30}, {100, 0, 0, 0});
+  results.models["baseline.seed_1"] =
+      Episodes({70, 70, 70, 70}, {40, 40, 40, 40}, {100, 100, 0, 0});
+  results.models["ref.agent"] = Episodes({100, 50, 100, 50}, {15, 15, 15, 15}, {0, 100, 0, 0});
+
+  const ScenarioSetReport report = SummariseScenarioSet(spec, results, "baseline");
+  ASSERT_EQ(report.models.size(), 3U);
+  const ModelSummary& better = report.models[0];
+  EXPECT_EQ(better.name, "better");
+  EXPECT_EQ(better.seeds, 2);
+  const MetricEstimate& progress = better.metrics.at("progress");
+  EXPECT_DOUBLE_EQ(progress.mean, 95.0);
+  // Bounded: a bootstrap over the seed means 100 and 90 stays within them.
+  EXPECT_EQ(progress.method, "bootstrap over seeds");
+  EXPECT_GE(progress.ci.low, 90.0);
+  EXPECT_LE(progress.ci.high, 100.0);
+  EXPECT_DOUBLE_EQ(better.metrics.at("collision").mean, 12.5);
+  // Unbounded: Student-t over the seed means 10 and 20 (sd 7.07, t(0.975, 1) = 12.706).
+  const MetricEstimate& cte = better.metrics.at("cross_track_error");
+  EXPECT_EQ(cte.method, "t over seeds");
+  EXPECT_NEAR(cte.ci.high - cte.mean, 12.7062 * 5.0, 1e-3);
+
+  const ModelSummary& agent = report.models[2];
+  EXPECT_EQ(agent.name, "ref.agent");
+  EXPECT_EQ(agent.metrics.at("collision").method, "Wilson");  // 1 of 4 episodes
+  EXPECT_NEAR(agent.metrics.at("collision").ci.low, 4.5586, 1e-3);
+  EXPECT_NEAR(agent.metrics.at("collision").ci.high, 69.9358, 1e-3);
+  EXPECT_EQ(agent.metrics.at("progress").method, "bootstrap");
+  EXPECT_GE(agent.metrics.at("progress").ci.low, 50.0);
+  EXPECT_LE(agent.metrics.at("progress").ci.high, 100.0);
+
+  // Improvements: better over baseline and over the agent; baseline over the agent only.
+  ASSERT_EQ(report.improvements.size(), 3U);
+  const ImprovementSummary& over_baseline = report.improvements[0];
+  EXPECT_EQ(over_baseline.over, "baseline");
+  EXPECT_DOUBLE_EQ(over_baseline.metrics.at("progress").probability, 1.0);
+  EXPECT_DOUBLE_EQ(over_baseline.metrics.at("cross_track_error").probability, 1.0);  // lower cte
+  // Collisions, lower is better, per scenario over the 2 x 2 seed pairs:
+  // t0: better {0, 0} vs {100, 100}: 4 wins; t1: {0, 0} vs {0, 100}: 2 wins + 2 ties; t2: 4 ties;
+  // t3: {0, 100} vs {0, 0}: 2 ties, 2 losses. (4 + 3 + 2 + 1) / 16.
+  EXPECT_DOUBLE_EQ(over_baseline.metrics.at("collision").probability, 10.0 / 16.0);
+  EXPECT_EQ(report.improvements[1].over, "ref.agent");
+  EXPECT_EQ(report.improvements[2].model, "baseline");
+}
+
+}  // namespace
+}  // namespace colav

@@ -1,0 +1,98 @@
+#include "eval/study/study_spec.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "tests/src/test_util.h"
+
+namespace colav {
+namespace {
+
+using testing_util::TemporaryFolder;
+using testing_util::UserErrorMessage;
+
+std::filesystem::path WriteStudy(const TemporaryFolder& folder, const std::string& text) {
+  const std::filesystem::path path = folder / "study.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+constexpr const char* kStudy = R"(name: tiny
+dataset: {dataset.sim_scans: 100}
+vaes:
+  shallow: {model: shallow, seeds: 2, set: {training.epochs: 2}}
+ppo:
+  seeds: 3
+  steps: 4096
+  set: {ppo.n_envs: 2}
+  configs:
+    shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
+    shallow_log: {extractor: vae-shallow, vae: shallow, set: {env.closeness: log}}
+    baseline: {extractor: baseline}
+evaluation: {episodes: 20, seed: 4, paper_episodes: 0}
+)";
+
+TEST(StudySpecTest, ReadsEverySection) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, kStudy));
+  EXPECT_EQ(spec.name, "tiny");
+  EXPECT_EQ(spec.dataset_overrides, Overrides{"dataset.sim_scans=100"});
+  ASSERT_EQ(spec.vaes.size(), 1U);
+  EXPECT_EQ(spec.vaes[0].seeds, 2);
+  EXPECT_EQ(spec.vaes[0].overrides, Overrides{"training.epochs=2"});
+  EXPECT_EQ(spec.ppo_seeds, 3);
+  EXPECT_EQ(spec.ppo_steps, 4096);
+  ASSERT_EQ(spec.ppo_configs.size(), 3U);
+  EXPECT_EQ(spec.ppo_configs[0].name, "shallow_locked");  // file order
+  EXPECT_EQ(spec.ppo_configs[1].overrides, Overrides{"env.closeness=log"});
+  EXPECT_EQ(spec.ppo_configs[2].extractor, "baseline");
+  EXPECT_EQ(spec.evaluation.episodes, 20);
+  EXPECT_EQ(spec.evaluation.seed, 4U);
+  EXPECT_EQ(spec.evaluation.paper_episodes, 0);
+}
+
+TEST(StudySpecTest, ShippedQuickstartStudyIsValid) {
+  const StudySpec spec =
+      LoadStudySpec(std::filesystem::path(COLAV_SOURCE_DIR) / "studies" / "quickstart.yaml");
+  EXPECT_EQ(spec.name, "quickstart");
+  EXPECT_EQ(spec.ppo_configs.size(), 2U);
+  EXPECT_TRUE(std::filesystem::is_regular_file(spec.evaluation.paper_results));
+}
+
+TEST(StudySpecTest, SelectsConfigurationsAndSeeds) {
+  const TemporaryFolder folder;
+  const StudySpec spec = SelectConfigs(LoadStudySpec(WriteStudy(folder, kStudy)), {"baseline"}, 1);
+  ASSERT_EQ(spec.ppo_configs.size(), 1U);
+  EXPECT_TRUE(spec.vaes.empty());  // the baseline needs no VAE
+  EXPECT_EQ(spec.ppo_seeds, 1);
+  EXPECT_NE(UserErrorMessage([&] { SelectConfigs(spec, {"nope"}, 0); }).find("--only nope"),
+            std::string::npos);
+}
+
+TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
+  const TemporaryFolder folder;
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"ppo: {configs: {a: {extractor: cnn}}}", "ppo.configs.a.extractor"},
+      {"ppo: {configs: {a: {extractor: vae-shallow}}}", "ppo.configs.a.vae"},
+      {"ppo: {configs: {a: {extractor: vae-deep, vae: s}}}\nvaes: {s: {model: shallow}}",
+       "ppo.configs.a.vae"},
+      {"ppo: {seeds: 0, configs: {a: {}}}", "ppo.seeds"},
+      {"ppo: {steps: 1.5, configs: {a: {}}}", "ppo.steps"},
+      {"ppo: {configs: {a: {locked: maybe}}}", "ppo.configs.a.locked"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {episodes: nan}", "evaluation.episodes"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {reference_agents: [missing.pt]}",
+       "evaluation.reference_agents[0]"},
+      {"ppo: {configs: {a: {}}}\ncolour: red", "colour"},
+      {"ppo: {configs: {'a/b': {}}}", "ppo.configs.a/b"},
+      {"vaes: {s: {}}", "ppo"},
+  };
+  for (const auto& [text, key] : cases) {
+    const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });
+    EXPECT_NE(message.find("study.yaml: " + key), std::string::npos) << text << " -> " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace colav
