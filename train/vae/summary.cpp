@@ -13,6 +13,7 @@ namespace {
 std::vector<double> Collect(const std::vector<SeedResult>& results,
                             double (*field)(const SeedResult&)) {
   std::vector<double> values;
+  values.reserve(results.size());
   for (const SeedResult& result : results) values.push_back(field(result));
   return values;
 }

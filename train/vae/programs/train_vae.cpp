@@ -27,6 +27,7 @@ constexpr std::int64_t kReconstructionScans = 6;
 void DrawRunFigures(const VaeData& data, const VaeTrainingOptions& options,
                     const std::vector<SeedResult>& results, const std::filesystem::path& run_dir) {
   std::vector<std::vector<EpochLosses>> histories;
+  histories.reserve(results.size());
   for (const SeedResult& result : results) histories.push_back(result.history);
   DrawTrainingCurves(histories, options.beta,
                      PaperModelName(options) + ", beta " +
