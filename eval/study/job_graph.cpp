@@ -62,7 +62,7 @@ void AddToGroup(std::vector<EvaluationGroup>& groups, const std::string& prefix,
   auto group = std::find_if(groups.begin(), groups.end(),
                             [&](const EvaluationGroup& g) { return g.name == name; });
   if (group == groups.end()) {
-    groups.push_back({name, {}, {}, env, 0, 0});
+    groups.push_back({name, "", {}, {}, env, 0, 0});
     group = groups.end() - 1;
   }
   group->models.push_back(model);
@@ -88,6 +88,7 @@ std::vector<EvaluationGroup> GroupsOnScenarios(const StudySpec& spec,
                "ref." + agent.stem().string(), agent);
   }
   for (EvaluationGroup& group : groups) {
+    group.scenario_set = scenarios;
     group.episodes = episodes;
     group.seed = seed;
   }

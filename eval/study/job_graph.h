@@ -30,7 +30,8 @@ struct StudyJob {
 
 /// A group of models evaluated together under the same environment overrides.
 struct EvaluationGroup {
-  std::string name;                 ///< "study", "reference-log", "paper": folder eval/<name>
+  std::string name;          ///< "study-ours", "study-reference-log", ...: folder eval/<name>
+  std::string scenario_set;  ///< "study" or "paper": the scenarios it plays
   std::vector<std::string> models;  ///< model names, e.g. "baseline.seed_0", "ref.baseline_3m"
   std::vector<std::filesystem::path> policies;
   Overrides overrides;  ///< env.* settings of the group

@@ -22,8 +22,7 @@ std::map<std::string, ScenarioSetResults> ReadStudyResults(const StudySpec& spec
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path file = out / "eval" / group.name / "episodes.csv";
     const CsvTable table = ReadCsvTable(file);
-    const std::string set = group.name.substr(0, group.name.find('-'));
-    ScenarioSetResults& results = sets[set];
+    ScenarioSetResults& results = sets[group.scenario_set];
     results.episodes = group.episodes;
     std::map<std::string, std::vector<double>> columns;
     for (const StudyMetric& metric : StudyMetrics()) {
