@@ -52,13 +52,18 @@ std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
   const int total = num_models * num_episodes;
   std::vector<torch::Tensor> observations;
   std::vector<Lane> lanes(total);
+  std::vector<EnvironmentConfig> policy_configs;
+  for (const Policy& policy : policies) {
+    policy_configs.push_back(
+        WithObservationSettings(config, policy.SettingsOr(ObservationSettingsOf(config))));
+  }
   for (int m = 0; m < num_models; ++m) {
     observations.push_back(torch::zeros({num_episodes, kObservationSize}));
     for (int e = 0; e < num_episodes; ++e) {
       Lane& lane = lanes[m * num_episodes + e];
       const EvaluationEpisode& episode = episodes[e];
       lane.env = std::make_unique<Environment>(
-          config, std::make_shared<FixedScenarioSource>(episode.scenario));
+          policy_configs[m], std::make_shared<FixedScenarioSource>(episode.scenario));
       lane.observation = observations[m].data_ptr<float>() + e * kObservationSize;
       lane.env->Reset(episode.seed.value_or(0), lane.observation);
       lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());

@@ -19,10 +19,11 @@ struct EpisodeOutcome {
   std::vector<double> cumulative_rewards;  ///< cumulative reward at each position (0 at reset)
 };
 
-/// outcomes[m][e]: policy m on episode e. Each time step, a policy's forward sees the observations
-/// of its unfinished episodes (at least two rows), so an episode's result does not depend on the
-/// other episodes when the policy's rows are computed independently of the batch size, as
-/// LibTorch's CPU kernels do for two rows and more.
+/// outcomes[m][e]: policy m on episode e, in the environment `config` under the policy's own
+/// observation settings (those of `config` for a policy that has none). Each time step, a policy's
+/// forward sees the observations of its unfinished episodes (at least two rows), so an episode's
+/// result does not depend on the other episodes when the policy's rows are computed independently
+/// of the batch size, as LibTorch's CPU kernels do for two rows and more.
 /// `on_episode_done(finished, total)` is called from the calling thread after each time step in
 /// which episodes finished.
 std::vector<std::vector<EpisodeOutcome>> RunEpisodes(

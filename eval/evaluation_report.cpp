@@ -18,28 +18,48 @@ nlohmann::ordered_json MetricsJson(const std::vector<MetricSummary>& metrics) {
   return json;
 }
 
+// The model's metrics with, beside the Student-t fields, "in_range": {method, low, high}.
+nlohmann::ordered_json ModelMetricsJson(const std::vector<MetricSummary>& metrics) {
+  nlohmann::ordered_json json = MetricsJson(metrics);
+  for (std::size_t k = 0; k < metrics.size(); ++k) {
+    json[metrics[k].key]["in_range"] = {
+        {"method", RangeIntervalMethodName(SummaryMetrics()[k].range_method)},
+        {"low", metrics[k].in_range.low},
+        {"high", metrics[k].in_range.high}};
+  }
+  return json;
+}
+
 nlohmann::ordered_json ModelJson(const ModelSummary& model) {
   return {{"name", model.name},
           {"policy", model.policy},
+          {"observation_settings", model.observation_settings},
           {"episodes", model.episodes},
           {"goals_reached", model.goals_reached},
           {"collisions", model.collisions},
           {"truncated", model.truncated},
-          {"metrics", MetricsJson(model.metrics)}};
+          {"metrics", ModelMetricsJson(model.metrics)}};
 }
 
 // "96.7 % [94.5, 98.9]" for fractions, "18.7 [16.6, 20.9]" otherwise; `sign` prefixes + to
 // positive means (differences).
-std::string FormatInterval(const MeanConfidenceInterval& interval, bool is_fraction, bool sign) {
+std::string FormatInterval(double mean, const Interval& interval, bool is_fraction, bool sign) {
   const double scale = is_fraction ? 100.0 : 1.0;
   char text[96];
   std::snprintf(text, sizeof text, sign ? "%+.1f%s [%.1f, %.1f]" : "%.1f%s [%.1f, %.1f]",
-                interval.mean * scale, is_fraction ? (sign ? " pp" : " %") : "",
-                interval.low * scale, interval.high * scale);
+                mean * scale, is_fraction ? (sign ? " pp" : " %") : "", interval.low * scale,
+                interval.high * scale);
   return text;
 }
 
-std::string SummaryTable(const std::vector<ModelSummary>& models) {
+std::string FormatInterval(const MeanConfidenceInterval& interval, bool is_fraction, bool sign) {
+  return FormatInterval(interval.mean, {interval.low, interval.high}, is_fraction, sign);
+}
+
+// Which of a metric's two intervals a table shows.
+enum class TableInterval { kInRange, kStudentT };
+
+std::string SummaryTable(const std::vector<ModelSummary>& models, TableInterval shown) {
   std::ostringstream table;
   table << "| metric |";
   for (const ModelSummary& model : models) table << ' ' << model.name << " |";
@@ -50,7 +70,12 @@ std::string SummaryTable(const std::vector<ModelSummary>& models) {
     const SummaryMetric& metric = SummaryMetrics()[k];
     table << "| " << metric.label << " |";
     for (const ModelSummary& model : models) {
-      table << ' ' << FormatInterval(model.metrics[k].interval, metric.is_fraction, false);
+      const MetricSummary& summary = model.metrics[k];
+      table << ' '
+            << (shown == TableInterval::kInRange
+                    ? FormatInterval(summary.interval.mean, summary.in_range, metric.is_fraction,
+                                     false)
+                    : FormatInterval(summary.interval, metric.is_fraction, false));
       if (metric.key == "goal") {
         table << " (" << model.goals_reached << '/' << model.episodes << ')';
       }
@@ -61,6 +86,14 @@ std::string SummaryTable(const std::vector<ModelSummary>& models) {
   table << "| truncated episodes |";
   for (const ModelSummary& model : models) table << ' ' << model.truncated << " |";
   table << '\n';
+  if (shown == TableInterval::kInRange) {
+    table << "| observation settings |";
+    for (const ModelSummary& model : models) {
+      table << ' ' << (model.observation_settings.empty() ? "-" : model.observation_settings)
+            << " |";
+    }
+    table << '\n';
+  }
   return table.str();
 }
 
@@ -92,9 +125,16 @@ ModelSummary ModelFromJson(const nlohmann::json& json) {
   model.goals_reached = json.at("goals_reached").get<int>();
   model.collisions = json.at("collisions").get<int>();
   model.truncated = json.at("truncated").get<int>();
+  model.observation_settings = json.value("observation_settings", std::string());
   for (const SummaryMetric& metric : SummaryMetrics()) {
-    model.metrics.push_back(
-        {metric.key, ConfidenceIntervalFromJson(json.at("metrics").at(metric.key))});
+    const nlohmann::json& metric_json = json.at("metrics").at(metric.key);
+    const MeanConfidenceInterval t = ConfidenceIntervalFromJson(metric_json);
+    // Summaries written before the in-range intervals existed have only the Student-t one.
+    const Interval in_range = metric_json.contains("in_range")
+                                  ? Interval{metric_json["in_range"].at("low").get<double>(),
+                                             metric_json["in_range"].at("high").get<double>()}
+                                  : Interval{t.low, t.high};
+    model.metrics.push_back({metric.key, t, in_range});
   }
   return model;
 }
@@ -141,8 +181,13 @@ std::string EvaluationReportMarkdown(const EvaluationReport& report) {
            << (report.scenarios == "test"
                    ? "test scenarios of master seed " + std::to_string(report.seed.value_or(0))
                    : std::string("scenario files"))
-           << "), mean [95 % Student-t CI]:\n\n"
-           << SummaryTable(report.models);
+           << "), mean [95 % CI]: rates (collisions, goals reached) with the Wilson score "
+              "interval, progress with the percentile bootstrap (2,000 resamples), the others "
+              "with Student-t:\n\n"
+           << SummaryTable(report.models, TableInterval::kInRange)
+           << "\nThe same with Student-t 95 % CIs for every metric, as the paper's table reports "
+              "them (they can leave [0, 100 %] for rates near 0 or 1):\n\n"
+           << SummaryTable(report.models, TableInterval::kStudentT);
   if (!report.differences.empty()) {
     markdown << "\nPaired differences on the same episodes, first minus second, mean [95 % "
                 "Student-t CI] (pp = percentage points; bold: the interval excludes 0):\n\n"

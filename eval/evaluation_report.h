@@ -28,14 +28,16 @@ EvaluationReport MakeEvaluationReport(const std::string& scenarios,
                                       const std::vector<std::string>& policies,
                                       const std::vector<std::vector<EpisodeMetrics>>& episodes);
 
-/// summary.json: {"scenarios", "seed", "models": [{"name", "policy", "episodes", "goals_reached",
-/// "collisions", "truncated", "metrics": {key: {"n", "mean", "sd", "low", "high",
-/// "half_width"}}}], "paired_differences": [{"first", "second", "metrics": {...}}]}. Fractions
-/// (progress, collision, goal) stay fractions.
+/// summary.json: {"scenarios", "seed", "models": [{"name", "policy", "observation_settings",
+/// "episodes", "goals_reached", "collisions", "truncated", "metrics": {key: {"n", "mean", "sd",
+/// "low", "high", "half_width", "in_range": {"method", "low", "high"}}}}], "paired_differences":
+/// [{"first", "second", "metrics": {...}}]}. low/high are Student-t; in_range is the interval that
+/// stays in the metric's range. Fractions (progress, collision, goal) stay fractions.
 nlohmann::ordered_json EvaluationReportJson(const EvaluationReport& report);
 
-/// summary.md: the paper-style table (metrics as rows, "mean [95 % CI]" per model; progress and
-/// rates in %), then the paired differences (first minus second; bold where the interval
+/// summary.md: the paper-style table (metrics as rows, "mean [95 % CI]" per model with the
+/// in-range intervals; progress and rates in %), the same with Student-t intervals, then the
+/// paired differences (first minus second; bold where the interval
 /// excludes 0).
 std::string EvaluationReportMarkdown(const EvaluationReport& report);
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "env/environment_spec.h"
+#include "models/observation_settings_record.h"
 #include "src/error.h"
 
 namespace colav {
@@ -48,6 +49,7 @@ Policy::Policy(const std::filesystem::path& path, std::string name)
     throw UserError(path.string() + ": TorchScript module has no forward method");
   }
   module_.eval();
+  ReadOwnSettings();
   // Probe with two batch sizes: evaluation runs many episodes through one forward call.
   for (const std::int64_t batch : {1, 2}) {
     const torch::Tensor actions = Forward(torch::zeros({batch, kObservationSize}));
@@ -57,6 +59,19 @@ Policy::Policy(const std::filesystem::path& path, std::string name)
                       ShapeText(actions) + ", expected [" + std::to_string(batch) + ", " +
                       std::to_string(kActionSize) + "]");
     }
+  }
+}
+
+void Policy::ReadOwnSettings() {
+  own_settings_ = RecordedObservationSettings(module_, path_.string());
+  if (own_settings_) {
+    settings_origin_ = "recorded in the file";
+    return;
+  }
+  const std::filesystem::path sidecar = SidecarPath(path_);
+  if (std::filesystem::exists(sidecar)) {
+    own_settings_ = LoadObservationSettingsFile(sidecar);
+    settings_origin_ = "sidecar " + sidecar.string();
   }
 }
 
@@ -82,6 +97,10 @@ torch::Tensor Policy::Forward(const torch::Tensor& observations) {
 
 torch::Tensor Policy::Act(const torch::Tensor& observations) {
   return Forward(observations).clamp(-1.0, 1.0);
+}
+
+std::filesystem::path SidecarPath(const std::filesystem::path& policy) {
+  return policy.string() + ".yaml";
 }
 
 std::string DefaultPolicyName(const std::filesystem::path& path) {

@@ -1,12 +1,18 @@
 // A trained agent as the evaluation sees it: a TorchScript policy file (spec interfaces.md,
-// policy.pt: forward(obs float32 [B, 186]) -> deterministic action [B, 2] in [-1, 1]).
+// policy.pt: forward(obs float32 [B, 186]) -> deterministic action [B, 2] in [-1, 1]) and the
+// observation settings it was trained with: recorded in the file (models/observation_settings_
+// record.h), else in a sidecar file "<policy file>.yaml" beside it (spec interfaces.md,
+// "Observation settings travel with models").
 #pragma once
 
 #include <torch/script.h>
 #include <torch/torch.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
+
+#include "env/observation_settings.h"
 
 namespace colav {
 
@@ -14,7 +20,7 @@ class Policy {
  public:
   /// Loads and checks `path`: it must exist, be TorchScript with a forward method, and map
   /// observations [1, 186] and [2, 186] to finite actions [1, 2] and [2, 2]. Anything else is a
-  /// one-line UserError naming the file.
+  /// one-line UserError naming the file; so is a malformed settings record or sidecar.
   Policy(const std::filesystem::path& path, std::string name);
 
   /// Deterministic actions [B, 2] for observations [B, 186], clipped to [-1, 1]. A failing
@@ -23,14 +29,28 @@ class Policy {
 
   const std::string& name() const { return name_; }
   const std::filesystem::path& path() const { return path_; }
+  /// The observation settings the policy was trained with, when its file or sidecar says.
+  const std::optional<ObservationSettings>& own_settings() const { return own_settings_; }
+  /// Where own_settings() come from: "recorded in the file", "sidecar <file>", or "unknown".
+  const std::string& settings_origin() const { return settings_origin_; }
+  /// The settings to run the policy under: its own, else `fallback` (the evaluation's).
+  ObservationSettings SettingsOr(const ObservationSettings& fallback) const {
+    return own_settings_.value_or(fallback);
+  }
 
  private:
   torch::Tensor Forward(const torch::Tensor& observations);
+  void ReadOwnSettings();
 
   std::filesystem::path path_;
   std::string name_;
   torch::jit::Module module_;
+  std::optional<ObservationSettings> own_settings_;
+  std::string settings_origin_ = "unknown";
 };
+
+/// The sidecar file of a policy file: "<policy file>.yaml".
+std::filesystem::path SidecarPath(const std::filesystem::path& policy);
 
 /// The default model name of a policy file: its folder's name for ".../RUN/policy.pt" (train_ppo
 /// run folders), else the file name without extension.

@@ -4,14 +4,11 @@
 #include <string>
 
 #include "env/environment_spec.h"
+#include "models/observation_settings_record.h"
 #include "models/torchscript_source.h"
 
 namespace colav {
 namespace {
-
-constexpr char kObservationLayout[] =
-    "obs[:, 0:6] = [u, v, r, cte/100, heading_error, look_ahead_heading_error]; "
-    "obs[:, 6:186] = closeness 1 - d/150 of rays i = 0..179 at -pi + (i+1)*2 deg";
 
 std::string FeaturesSource(FeatureExtractorImpl& extractor) {
   std::ostringstream source;
@@ -48,7 +45,8 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
 
 }  // namespace
 
-torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step) {
+torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step,
+                                const ObservationSettings& settings) {
   torch::jit::Module script("__torch__.colav.PpoPolicy");
   RegisterParameters(model, script);
   const FeatureExtractorOptions& extractor = model.options().extractor;
@@ -57,7 +55,8 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
                             !model.features_extractor()->trainable());
   script.register_attribute("global_step", c10::IntType::get(), global_step);
   script.register_attribute("observation_layout", c10::StringType::get(),
-                            std::string(kObservationLayout));
+                            ObservationLayoutText(settings));
+  RecordObservationSettings(script, settings);
   script.define(FeaturesSource(*model.features_extractor()) +
                 "def forward(self, obs: Tensor) -> Tensor:\n"
                 "    f = self.features(obs)\n" +
@@ -71,8 +70,8 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
 }
 
 void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                  const std::filesystem::path& path) {
-  SaveScript(ScriptPolicy(model, global_step), path);
+                  const ObservationSettings& settings, const std::filesystem::path& path) {
+  SaveScript(ScriptPolicy(model, global_step, settings), path);
 }
 
 }  // namespace colav

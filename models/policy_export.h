@@ -8,7 +8,9 @@
 //   value(obs) -> [B, 1];  features(obs) -> [B, 18] (the extractor's output).
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead
 //   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees).
-//   Attributes: extractor (str), locked (bool), global_step (int), observation_layout (str).
+//   Attributes: extractor (str), locked (bool), global_step (int), observation_layout (str, the
+//   line above for the closeness transform trained with), observation_settings (str, the settings
+//   trained with, models/observation_settings_record.h).
 // A parameter `a.b.c` of the ActorCritic is the attribute `a_b_c` of the scripted module.
 #pragma once
 
@@ -18,15 +20,18 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "env/observation_settings.h"
 #include "models/actor_critic.h"
 
 namespace colav {
 
-/// The scripted policy in memory (parameters are detached copies).
-torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step);
+/// The scripted policy in memory (parameters are detached copies), recording the observation
+/// `settings` it was trained with.
+torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step,
+                                const ObservationSettings& settings);
 
-/// Writes ScriptPolicy(model) to `path` atomically; an unwritable path is a UserError naming it.
+/// Writes ScriptPolicy(...) to `path` atomically; an unwritable path is a UserError naming it.
 void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                  const std::filesystem::path& path);
+                  const ObservationSettings& settings, const std::filesystem::path& path);
 
 }  // namespace colav

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "models/cptc.h"
+#include "models/observation_settings_record.h"
 #include "models/torchscript_source.h"
 #include "models/vae_architecture.h"
 #include "src/error.h"
@@ -57,10 +58,14 @@ std::string DecoderSource(const VaeDecoderOptions& options) {
   return source.str();
 }
 
+std::string EncoderFileName(const std::filesystem::path& path) {
+  return "encoder file '" + path.string() + "'";
+}
+
 torch::jit::IValue RequireAttribute(const torch::jit::Module& script, const std::string& name,
                                     const std::filesystem::path& path) {
   if (!script.hasattr(name)) {
-    throw UserError("encoder file '" + path.string() + "' has no attribute '" + name + "'");
+    throw UserError(EncoderFileName(path) + " has no attribute '" + name + "'");
   }
   return script.attr(name);
 }
@@ -84,22 +89,34 @@ torch::Tensor StoredParameter(const torch::jit::Module& script, const std::strin
   return stored;
 }
 
+torch::jit::Module LoadEncoderScript(const std::filesystem::path& path) {
+  const std::string file = EncoderFileName(path);
+  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
+  try {
+    return torch::jit::load(path.string(), torch::kCPU);
+  } catch (const std::exception&) {
+    throw UserError(file + " is not a TorchScript file");
+  }
+}
+
 }  // namespace
 
-torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder) {
+torch::jit::Module ScriptEncoder(const VaeEncoderImpl& encoder,
+                                 const ObservationSettings& settings) {
   const VaeEncoderOptions& options = encoder.options();
   torch::jit::Module script("__torch__.colav.VaeEncoder");
   RegisterParameters(encoder, script);
   script.register_attribute(kArchitectureAttribute, c10::StringType::get(),
                             VaeArchitectureName(options.architecture));
   script.register_attribute(kLatentDimsAttribute, c10::IntType::get(), options.latent_dims);
+  RecordObservationSettings(script, settings);
   script.define("def forward(self, x: Tensor) -> Tensor:\n" +
                 EncoderFeaturesSource(options.architecture, "") + "    return " +
                 LinearSource("h", "fc_mu") + "\n");
   return script;
 }
 
-torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
+torch::jit::Module ScriptVae(const ConvVaeImpl& vae, const ObservationSettings& settings) {
   const VaeOptions& options = vae.options();
   torch::jit::Module script("__torch__.colav.ConvVae");
   RegisterParameters(vae, script);
@@ -108,6 +125,7 @@ torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
   script.register_attribute(kLatentDimsAttribute, c10::IntType::get(), options.latent_dims);
   script.register_attribute(kDecoderPaddingAttribute, c10::StringType::get(),
                             DecoderPaddingName(options.decoder_padding));
+  RecordObservationSettings(script, settings);
   script.define("def encode(self, x: Tensor) -> Tuple[Tensor, Tensor]:\n" +
                 EncoderFeaturesSource(options.architecture, "encoder.") + "    return " +
                 LinearSource("h", "encoder.fc_mu") + ", " + LinearSource("h", "encoder.fc_logvar") +
@@ -119,23 +137,19 @@ torch::jit::Module ScriptVae(const ConvVaeImpl& vae) {
   return script;
 }
 
-void ExportEncoder(const VaeEncoder& encoder, const std::filesystem::path& path) {
-  SaveScript(ScriptEncoder(*encoder), path);
+void ExportEncoder(const VaeEncoder& encoder, const ObservationSettings& settings,
+                   const std::filesystem::path& path) {
+  SaveScript(ScriptEncoder(*encoder, settings), path);
 }
 
-void ExportVae(const ConvVae& vae, const std::filesystem::path& path) {
-  SaveScript(ScriptVae(*vae), path);
+void ExportVae(const ConvVae& vae, const ObservationSettings& settings,
+               const std::filesystem::path& path) {
+  SaveScript(ScriptVae(*vae, settings), path);
 }
 
 VaeEncoder LoadVaeEncoder(const std::filesystem::path& path) {
-  const std::string file = "encoder file '" + path.string() + "'";
-  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
-  torch::jit::Module script;
-  try {
-    script = torch::jit::load(path.string(), torch::kCPU);
-  } catch (const std::exception&) {
-    throw UserError(file + " is not a TorchScript file");
-  }
+  const std::string file = EncoderFileName(path);
+  const torch::jit::Module script = LoadEncoderScript(path);
 
   const torch::jit::IValue architecture = RequireAttribute(script, kArchitectureAttribute, path);
   const torch::jit::IValue latent_dims = RequireAttribute(script, kLatentDimsAttribute, path);
@@ -157,6 +171,10 @@ VaeEncoder LoadVaeEncoder(const std::filesystem::path& path) {
                                             parameter.value().sizes(), options, file));
   }
   return encoder;
+}
+
+std::optional<ObservationSettings> EncoderObservationSettings(const std::filesystem::path& path) {
+  return RecordedObservationSettings(LoadEncoderScript(path), EncoderFileName(path));
 }
 
 }  // namespace colav

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "env/environment_config.h"
+#include "env/observation_settings.h"
 #include "eval/episode_runner.h"
 #include "eval/episode_table.h"
 #include "eval/evaluation_episodes.h"
@@ -75,6 +76,35 @@ std::vector<Policy> LoadPolicies(const std::vector<std::string>& paths,
     policies.emplace_back(paths[m], name);
   }
   return policies;
+}
+
+// Logs, per policy, the observation settings it runs under and where they come from (a warning
+// when neither its file nor a sidecar says) and
+// returns them as "closeness log (recorded in the file)" for the report.
+std::vector<std::string> ObservationSettingsLines(const std::vector<Policy>& policies,
+                                                  const EnvironmentConfig& env) {
+  const ObservationSettings configured = ObservationSettingsOf(env);
+  std::vector<std::string> lines;
+  for (const Policy& policy : policies) {
+    const ObservationSettings used = policy.SettingsOr(configured);
+    lines.push_back(DescribeObservationSettings(used) + " (" +
+                    (policy.own_settings() ? policy.settings_origin() : "evaluation config") + ")");
+    if (!policy.own_settings()) {
+      spdlog::warn(
+          "{}: {} records no observation settings and has no sidecar {}; running it under "
+          "the evaluation's {}",
+          policy.name(), policy.path().string(), SidecarPath(policy.path()).string(),
+          DescribeObservationSettings(used));
+    } else if (used != configured) {
+      spdlog::info("{}: runs under its own {} ({}), not the evaluation's {}", policy.name(),
+                   DescribeObservationSettings(used), policy.settings_origin(),
+                   DescribeObservationSettings(configured));
+    } else {
+      spdlog::info("{}: {} ({})", policy.name(), DescribeObservationSettings(used),
+                   policy.settings_origin());
+    }
+  }
+  return lines;
 }
 
 std::vector<std::vector<EpisodeOutcome>> RunWithProgress(
@@ -151,8 +181,11 @@ int Evaluate(int argc, char** argv) {
       "test\n"
       "scenarios (training worlds from a fixed list of seeds, test mode) or on scenario files, "
       "and\n"
-      "writes OUT/episodes.csv, OUT/summary.json, OUT/summary.md (mean and Student-t 95 % CI per\n"
-      "model, paired differences between models) and trajectory figures in OUT/figures/."};
+      "writes OUT/episodes.csv, OUT/summary.json, OUT/summary.md (mean and 95 % CIs per model,\n"
+      "paired differences between models) and trajectory figures in OUT/figures/. Each policy "
+      "runs\n"
+      "under the observation settings (env.closeness) recorded in its file, else in its sidecar\n"
+      "<policy>.yaml, else (with a warning) under this evaluation's."};
   std::vector<std::string> policy_paths;
   std::vector<std::string> names;
   std::vector<std::string> scenario_files;
@@ -190,6 +223,7 @@ int Evaluate(int argc, char** argv) {
   folder.WriteResolvedConfig(config);
   spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),
                on_files ? "scenario files" : "test scenarios");
+  const std::vector<std::string> settings = ObservationSettingsLines(policies, options.env);
 
   const auto outcomes = RunWithProgress(policies, episodes, options.env, threads, "evaluate");
   const double evaluation_s =
@@ -200,9 +234,12 @@ int Evaluate(int argc, char** argv) {
     model_names.push_back(policy.name());
     model_policies.push_back(policy.path().string());
   }
-  const EvaluationReport report = MakeEvaluationReport(
+  EvaluationReport report = MakeEvaluationReport(
       on_files ? "files" : "test", on_files ? std::nullopt : std::optional<std::uint64_t>(seed),
       model_names, model_policies, MetricsOf(outcomes));
+  for (std::size_t m = 0; m < policies.size(); ++m) {
+    report.models[m].observation_settings = settings[m];
+  }
   WriteTextFileAtomically(folder.path() / "episodes.csv",
                           EpisodeTable(model_names, episodes, outcomes));
   WriteTextFileAtomically(folder.path() / "summary.json",

@@ -1,11 +1,7 @@
 #include "eval/study/job_graph.h"
 
-#include <yaml-cpp/yaml.h>
-
 #include <algorithm>
 #include <map>
-
-#include "src/yaml_file.h"
 
 namespace colav {
 namespace {
@@ -15,6 +11,8 @@ constexpr double kPpoStepsPerSecond = 35'000.0;
 constexpr double kVaeSecondsPerSeed = 12.0;
 constexpr double kEvaluationEpisodesPerSecond = 200.0;
 constexpr double kDatasetSeconds = 2.0;
+constexpr double kFigureSeconds = 2.0;
+constexpr double kVaeFiguresSeconds = 150.0;
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
   for (const std::string& assignment : overrides) {
@@ -23,76 +21,23 @@ void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides)
   }
 }
 
-// The env.* overrides among `overrides`, in order (they decide an evaluation's environment).
-Overrides EnvironmentOverrides(const Overrides& overrides) {
-  Overrides env;
-  for (const std::string& assignment : overrides) {
-    if (assignment.rfind("env.", 0) == 0) env.push_back(assignment);
-  }
-  return env;
-}
-
-// The env settings of a reference agent's sidecar "<policy>.yaml" (none without a sidecar).
-Overrides SidecarOverrides(const std::filesystem::path& policy) {
-  Overrides env;
-  const std::filesystem::path sidecar = policy.string() + ".yaml";
-  if (!std::filesystem::exists(sidecar)) return env;
-  const YAML::Node root = LoadYamlFile(sidecar);
-  if (root["env"] && root["env"].IsMap()) {
-    for (const auto& item : root["env"]) {
-      env.push_back("env." + item.first.as<std::string>() + "=" + item.second.as<std::string>());
-    }
-  }
-  return env;
-}
-
-std::string GroupSuffix(const Overrides& env) {
-  std::string suffix;
-  for (const std::string& assignment : env) {
-    suffix += "-" + assignment.substr(assignment.find('=') + 1);
-  }
-  return suffix;
-}
-
-// Adds `model` to the group of `prefix` + its env settings, creating the group on first use.
-void AddToGroup(std::vector<EvaluationGroup>& groups, const std::string& prefix,
-                const Overrides& env, const std::string& model,
-                const std::filesystem::path& policy) {
-  const std::string name = prefix + GroupSuffix(env);
-  auto group = std::find_if(groups.begin(), groups.end(),
-                            [&](const EvaluationGroup& g) { return g.name == name; });
-  if (group == groups.end()) {
-    groups.push_back({name, "", {}, {}, env, 0, 0});
-    group = groups.end() - 1;
-  }
-  group->models.push_back(model);
-  group->policies.push_back(policy);
-}
-
-std::vector<EvaluationGroup> GroupsOnScenarios(const StudySpec& spec,
-                                               const std::filesystem::path& out,
-                                               const std::string& scenarios, int episodes,
-                                               std::uint64_t seed) {
-  std::vector<EvaluationGroup> groups;
+// Every model of the study on one scenario set, in one paired evaluation: each policy runs under
+// the observation settings it records (the reference agents': their sidecar files).
+EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::path& out,
+                                 const std::string& scenarios, int episodes, std::uint64_t seed) {
+  EvaluationGroup group{scenarios, {}, {}, episodes, seed};
   for (const PpoConfigSpec& config : spec.ppo_configs) {
-    Overrides all = spec.ppo_overrides;
-    all.insert(all.end(), config.overrides.begin(), config.overrides.end());
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      AddToGroup(groups, scenarios + "-ours", EnvironmentOverrides(all),
-                 SeedModelName(config.name, k),
-                 out / "ppo" / config.name / ("seed_" + std::to_string(k)) / "policy.pt");
+      group.models.push_back(SeedModelName(config.name, k));
+      group.policies.push_back(out / "ppo" / config.name / ("seed_" + std::to_string(k)) /
+                               "policy.pt");
     }
   }
   for (const std::filesystem::path& agent : spec.evaluation.reference_agents) {
-    AddToGroup(groups, scenarios + "-reference", SidecarOverrides(agent),
-               "ref." + agent.stem().string(), agent);
+    group.models.push_back("ref." + agent.stem().string());
+    group.policies.push_back(agent);
   }
-  for (EvaluationGroup& group : groups) {
-    group.scenario_set = scenarios;
-    group.episodes = episodes;
-    group.seed = seed;
-  }
-  return groups;
+  return group;
 }
 
 std::size_t AddJob(std::vector<StudyJob>& jobs, StudyJob job) {
@@ -100,7 +45,38 @@ std::size_t AddJob(std::vector<StudyJob>& jobs, StudyJob job) {
   return jobs.size() - 1;
 }
 
+// One plot_training job per configuration, drawing the training curves of all its seeds.
+void AddTrainingFigureJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
+                           const std::filesystem::path& out,
+                           const std::map<std::string, std::size_t>& policy_jobs) {
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    const std::filesystem::path png = out / TrainingFigurePath(config.name);
+    StudyJob job{"figures/training/" + config.name,
+                 "plot_training",
+                 {"--out", png.string(), "--title",
+                  "Training of " + config.name + ", " + std::to_string(spec.ppo_seeds) + " seeds"},
+                 {},
+                 png,
+                 {},
+                 {},
+                 kFigureSeconds};
+    job.check_configuration = false;  // every argument comes from the study, none from the user
+    for (int k = 0; k < spec.ppo_seeds; ++k) {
+      const std::filesystem::path dir = out / "ppo" / config.name / ("seed_" + std::to_string(k));
+      job.args.insert(job.args.end(), {"--run", "seed_" + std::to_string(k) + "=" + dir.string()});
+      job.dependencies.push_back(policy_jobs.at((dir / "policy.pt").string()));
+    }
+    AddJob(jobs, job);
+  }
+}
+
 }  // namespace
+
+std::filesystem::path VaeFiguresFolder() { return std::filesystem::path("figures") / "vae"; }
+
+std::filesystem::path TrainingFigurePath(const std::string& config) {
+  return std::filesystem::path("figures") / ("training_" + config + ".png");
+}
 
 std::string SeedModelName(const std::string& config, int seed) {
   return config + ".seed_" + std::to_string(seed);
@@ -108,12 +84,10 @@ std::string SeedModelName(const std::string& config, int seed) {
 
 std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
                                               const std::filesystem::path& out) {
-  std::vector<EvaluationGroup> groups =
-      GroupsOnScenarios(spec, out, "study", spec.evaluation.episodes, spec.evaluation.seed);
+  std::vector<EvaluationGroup> groups = {
+      GroupOnScenarios(spec, out, "study", spec.evaluation.episodes, spec.evaluation.seed)};
   if (spec.evaluation.paper_episodes > 0) {
-    const std::vector<EvaluationGroup> paper =
-        GroupsOnScenarios(spec, out, "paper", spec.evaluation.paper_episodes, 0);
-    groups.insert(groups.end(), paper.begin(), paper.end());
+    groups.push_back(GroupOnScenarios(spec, out, "paper", spec.evaluation.paper_episodes, 0));
   }
   return groups;
 }
@@ -126,6 +100,17 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   AppendOverrides(dataset.args, spec.dataset_overrides);
   const std::size_t dataset_index = AddJob(jobs, dataset);
 
+  if (spec.vae_figures) {
+    const std::filesystem::path dir = out / VaeFiguresFolder();
+    AddJob(jobs, {"figures/vae",
+                  "vae_figures",
+                  {"--data", data.string(), "--out", dir.string()},
+                  {},
+                  dir / "latent_kde.png",
+                  {},
+                  {dataset_index},
+                  kVaeFiguresSeconds});
+  }
   std::map<std::string, std::size_t> vae_jobs;
   for (const VaeSpec& vae : spec.vaes) {
     const std::filesystem::path dir = out / "vae" / vae.name;
@@ -174,10 +159,11 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
     }
   }
 
+  AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
-    const std::filesystem::path dir = out / "eval" / group.name;
+    const std::filesystem::path dir = out / "eval" / group.scenario_set;
     StudyJob job{
-        "eval/" + group.name,
+        "eval/" + group.scenario_set,
         "evaluate",
         {},
         {},
@@ -194,7 +180,6 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
     job.args.insert(job.args.end(),
                     {"--episodes", std::to_string(group.episodes), "--seed",
                      std::to_string(group.seed), "--trajectories", "0", "--out", dir.string()});
-    AppendOverrides(job.args, group.overrides);
     AddJob(jobs, job);
   }
   return jobs;

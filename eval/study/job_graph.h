@@ -28,23 +28,30 @@ struct StudyJob {
   bool check_configuration = true;
 };
 
-/// A group of models evaluated together under the same environment overrides.
+/// Models evaluated together, paired, on one scenario set (one evaluate run).
 struct EvaluationGroup {
-  std::string name;          ///< "study-ours", "study-reference-log", ...: folder eval/<name>
-  std::string scenario_set;  ///< "study" or "paper": the scenarios it plays
+  std::string scenario_set;  ///< "study" or "paper": the scenarios it plays, folder eval/<set>
   std::vector<std::string> models;  ///< model names, e.g. "baseline.seed_0", "ref.baseline_3m"
   std::vector<std::filesystem::path> policies;
-  Overrides overrides;  ///< env.* settings of the group
   int episodes = 0;
   std::uint64_t seed = 0;
 };
 
+/// "figures/vae": vae_figures' folder (padding_comparison.png, latent_kde.png) when the study
+/// draws them, relative to the study's output folder.
+std::filesystem::path VaeFiguresFolder();
+
+/// "figures/training_<config>.png": the training curves of a configuration's seeds, relative to the
+/// study's output folder.
+std::filesystem::path TrainingFigurePath(const std::string& config);
+
 /// "<config>.seed_<k>": the model name of a PPO run in evaluations.
 std::string SeedModelName(const std::string& config, int seed);
 
-/// The evaluation groups of a study: its PPO runs grouped by their env.* overrides, the
-/// reference agents grouped by the env settings of their sidecar files, on the study's scenarios;
-/// and the same again on the paper's scenarios when paper_episodes > 0.
+/// The evaluation groups of a study: every PPO run and reference agent on the study's scenarios,
+/// and the same on the paper's scenarios when paper_episodes > 0. Each policy runs under the
+/// observation settings it records or its sidecar gives (evaluate), so models trained under
+/// different settings are still compared paired.
 std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
                                               const std::filesystem::path& out);
 

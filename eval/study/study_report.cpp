@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "eval/study/study_figures.h"
 #include "src/atomic_file.h"
 #include "src/rate_interval.h"
 #include "src/statistics.h"
@@ -177,6 +178,34 @@ void PaperTable(std::ostringstream& md, const ScenarioSetReport& report,
   }
 }
 
+// The set's figures, drawn into OUT/figures/ and linked from the report.
+void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesystem::path& out,
+             const std::string& set, const ScenarioSetResults& results,
+             const ScenarioSetReport& report) {
+  const std::string models = "figures/" + set + "_models.png";
+  DrawModelsFigure(spec, results, report,
+                   fmt::format("{}: {} scenarios, mean and 95 % CI", spec.name, report.episodes),
+                   out / models);
+  md << "\n![every model on these scenarios](" << models << ")\n";
+  const auto sweep = BetaSweep(spec);
+  if (set != "study" || sweep.empty()) return;
+  const std::string beta = "figures/beta_sweep.png";
+  DrawBetaSweepFigure(spec, results, report, sweep, out / beta);
+  md << "\n![the beta sweep](" << beta << ")\n";
+}
+
+// The figures that the study's figure jobs drew (job_graph.h): the VAE figures, the training
+// curves of each configuration.
+void JobFigures(std::ostringstream& md, const StudySpec& spec, const std::filesystem::path& out) {
+  md << "\n## Training\n";
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    const std::filesystem::path png = TrainingFigurePath(config.name);
+    if (std::filesystem::exists(out / png)) {
+      md << "\n![training of " << config.name << "](" << png.string() << ")\n";
+    }
+  }
+}
+
 }  // namespace
 
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
@@ -231,9 +260,11 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
        << " scenarios (master seed " << (set == "paper" ? std::uint64_t{0} : spec.evaluation.seed)
        << ")\n\n";
     ModelTable(md, report);
+    Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
     if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);
   }
+  JobFigures(md, spec, out);
   WriteTextFileAtomically(out / "summary.json", json.dump(2) + "\n");
   WriteTextFileAtomically(out / "REPORT.md", md.str());
 }

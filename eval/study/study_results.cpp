@@ -20,7 +20,7 @@ std::map<std::string, ScenarioSetResults> ReadStudyResults(const StudySpec& spec
                                                            const std::filesystem::path& out) {
   std::map<std::string, ScenarioSetResults> sets;
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
-    const std::filesystem::path file = out / "eval" / group.name / "episodes.csv";
+    const std::filesystem::path file = out / "eval" / group.scenario_set / "episodes.csv";
     const CsvTable table = ReadCsvTable(file);
     ScenarioSetResults& results = sets[group.scenario_set];
     results.episodes = group.episodes;

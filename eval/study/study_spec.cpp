@@ -214,13 +214,14 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
 StudySpec LoadStudySpec(const std::filesystem::path& path) {
   const YAML::Node root = LoadYamlFile(path);
   const Reader reader(path);
-  reader.RequireMap(root, "", {"name", "dataset", "vaes", "ppo", "evaluation"});
+  reader.RequireMap(root, "", {"name", "dataset", "vaes", "ppo", "evaluation", "vae_figures"});
   StudySpec spec;
   spec.name = root["name"] ? reader.Name(root["name"], "name") : path.stem().string();
   spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
   spec.vaes = ReadVaes(reader, root["vaes"]);
   ReadPpo(reader, root["ppo"], spec);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
+  if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
   return spec;
 }
 
@@ -239,6 +240,7 @@ StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, in
     used_vaes.insert(config->vae);
   }
   spec.ppo_configs = configs;
+  spec.vae_figures = false;  // not needed by any configuration
   spec.vaes.erase(std::remove_if(spec.vaes.begin(), spec.vaes.end(),
                                  [&](const VaeSpec& v) { return used_vaes.count(v.name) == 0; }),
                   spec.vaes.end());

@@ -19,6 +19,7 @@
 //     paper_episodes: 100                           # the paper's table (master seed 0); 0: none
 //     reference_agents: [../shared/reference-agents/shallow_locked_3m.pt]
 //     paper_results: paper_results.yaml              # the paper's table, printed beside ours
+//   vae_figures: true                               # the paper's VAE figures (vae_figures)
 #pragma once
 
 #include <cstdint>
@@ -64,13 +65,16 @@ struct StudySpec {
   Overrides ppo_overrides;
   std::vector<PpoConfigSpec> ppo_configs;
   EvaluationSpec evaluation;
+  /// Also draw the paper's VAE figures (padding comparison, latent densities) on the study's
+  /// dataset: eight small VAEs, a few minutes.
+  bool vae_figures = false;
 };
 
 /// The study of `path`; relative reference-agent paths are taken from the study file's folder.
 StudySpec LoadStudySpec(const std::filesystem::path& path);
 
-/// The study restricted to the PPO configurations `only` (and the VAEs they use), with
-/// `seeds` training seeds when > 0. An unknown name is a UserError.
+/// The study restricted to the PPO configurations `only` (and the VAEs they use, no VAE figures),
+/// with `seeds` training seeds when > 0. An unknown name is a UserError.
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
 
 }  // namespace colav

@@ -41,10 +41,11 @@ status=0
 grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
 for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
   ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt \
-  eval/study-ours/episodes.csv eval/paper-ours/episodes.csv; do
+  eval/study/episodes.csv eval/paper/episodes.csv figures/study_models.png figures/paper_models.png \
+  figures/training_baseline.png figures/training_shallow_locked.png; do
   [ -s "$WORK/run/$file" ] || fail "missing $file"
 done
-grep -q "8 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import json, sys
 s = json.load(open(sys.argv[1]))
@@ -65,7 +66,7 @@ PY
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
   fail "second run failed"
-grep -q "0 jobs run, 8 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+grep -q "0 jobs run, 10 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
 
 # Stopped in the middle of a longer PPO run, then resumed by the same command.
 sed -e 's/steps: 2048/steps: 400000/' "$WORK/tiny.yaml" >"$WORK/long.yaml"

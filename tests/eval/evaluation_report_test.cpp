@@ -37,6 +37,11 @@ TEST(EvaluationReport, MarkdownHasThePaperTableAndThePairedDifferences) {
   EXPECT_NE(markdown.find("| collisions | 5.0 % [0.7, 9.3] | 4.0 % [0.1, 7.9] |"),
             std::string::npos)
       << markdown;
+  // The first table: Wilson score intervals for the rates.
+  EXPECT_NE(markdown.find("| collisions | 5.0 % [2.2, 11.2] | 4.0 % [1.6, 9.8] |"),
+            std::string::npos)
+      << markdown;
+  EXPECT_LT(markdown.find("[2.2, 11.2]"), markdown.find("[0.7, 9.3]"));
   EXPECT_NE(markdown.find("(95/100)"), std::string::npos) << markdown;
   // Progress differs by exactly one point on every episode: a paired interval of zero width.
   EXPECT_NE(markdown.find("| shallow - baseline | **+1.0 pp [1.0, 1.0]** |"), std::string::npos)
@@ -66,7 +71,10 @@ TEST(EvaluationReport, JsonRoundTrip) {
   for (std::size_t k = 0; k < SummaryMetrics().size(); ++k) {
     EXPECT_EQ(models[0].metrics[k].key, report.models[0].metrics[k].key);
     EXPECT_DOUBLE_EQ(models[0].metrics[k].interval.high, report.models[0].metrics[k].interval.high);
+    EXPECT_DOUBLE_EQ(models[0].metrics[k].in_range.low, report.models[0].metrics[k].in_range.low);
   }
+  EXPECT_EQ(json["models"][0]["metrics"]["collision"]["in_range"]["method"], "wilson");
+  EXPECT_EQ(json["models"][0]["metrics"]["progress"]["in_range"]["method"], "bootstrap");
 }
 
 TEST(EvaluationReport, BadSummaryFilesAreOneLineErrors) {

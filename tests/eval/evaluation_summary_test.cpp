@@ -1,5 +1,5 @@
-// The statistics of an evaluation: the Student-t intervals of the paper's DRL table and the paired
-// differences between models.
+// The statistics of an evaluation: the Student-t intervals of the paper's DRL table, the intervals
+// that stay in range, and the paired differences between models.
 #include "eval/evaluation_summary.h"
 
 #include <gtest/gtest.h>
@@ -42,6 +42,34 @@ TEST(EvaluationSummary, CollisionRateIntervalsMatchThePaperTable) {
     EXPECT_NEAR(rate.high, c.high, 1e-8);
     EXPECT_EQ(rate.count, 100U);
   }
+}
+
+TEST(EvaluationSummary, RatesGetWilsonIntervalsThatStayInRange) {
+  // 1 collision in 6 episodes: Student-t leaves [0, 1] ("16.7 % [-26.2, 59.5]"), Wilson does not:
+  // (p + z^2/2n -+ z sqrt(p(1-p)/n + z^2/4n^2)) / (1 + z^2/n) = [0.0301, 0.5635].
+  const ModelSummary one = SummariseModel("m", "m.pt", EpisodesWithCollisions(6, 1));
+  const MetricSummary& rate = FindMetric(one.metrics, "collision");
+  EXPECT_LT(rate.interval.low, 0.0);
+  EXPECT_NEAR(rate.in_range.low, 0.030053, 1e-6);
+  EXPECT_NEAR(rate.in_range.high, 0.563503, 1e-6);
+  // None of the 6 goals reached: [0, z^2 / (n + z^2)].
+  const MetricSummary& goals = FindMetric(one.metrics, "goal");
+  EXPECT_EQ(goals.in_range.low, 0.0);
+  EXPECT_NEAR(goals.in_range.high, 3.841459 / (6 + 3.841459), 1e-6);
+}
+
+TEST(EvaluationSummary, ProgressGetsABootstrapIntervalInsideItsValues) {
+  const ModelSummary summary =
+      SummariseModel("m", "m.pt", EpisodesWithProgress({1.0, 1.0, 1.0, 0.2, 1.0, 0.9}));
+  const MetricSummary& progress = FindMetric(summary.metrics, "progress");
+  EXPECT_GT(progress.interval.high, 1.0);  // Student-t leaves the range
+  EXPECT_GE(progress.in_range.low, 0.2);
+  EXPECT_LE(progress.in_range.high, 1.0);
+  EXPECT_LT(progress.in_range.low, progress.interval.mean);
+  EXPECT_EQ(SummariseModel("m", "m.pt", EpisodesWithProgress({1.0, 1.0, 1.0, 0.2, 1.0, 0.9}))
+                .metrics[0]
+                .in_range.low,
+            progress.in_range.low);  // a fixed bootstrap seed: the same summary every time
 }
 
 TEST(EvaluationSummary, CountsGoalsCollisionsAndTruncations) {

@@ -23,7 +23,8 @@ ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& fold
         kind == ExtractorKind::kVaeDeep ? VaeArchitecture::kDeep : VaeArchitecture::kShallow;
     torch::manual_seed(2);
     options.extractor.encoder = folder / "encoder.pt";
-    ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, 12}), options.extractor.encoder);
+    ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, 12}), ObservationSettings{},
+                  options.extractor.encoder);
   }
   return options;
 }

@@ -82,7 +82,7 @@ TEST(ActorCriticTest, PretrainedEncoderKeepsItsWeights) {
   testing_util::TemporaryFolder directory;
   torch::manual_seed(3);
   VaeEncoder encoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12});
-  ExportEncoder(encoder, directory.path() / "encoder.pt");
+  ExportEncoder(encoder, ObservationSettings{}, directory.path() / "encoder.pt");
   for (const bool locked : {true, false}) {
     ActorCriticOptions options;
     options.extractor.kind = ExtractorKind::kVaeDeep;

@@ -17,7 +17,7 @@ using testing_util::UserErrorMessage;
 std::filesystem::path ExportedEncoder(const std::filesystem::path& folder,
                                       VaeArchitecture architecture, std::int64_t latent) {
   const std::filesystem::path path = folder / "encoder.pt";
-  ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, latent}), path);
+  ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, latent}), ObservationSettings{}, path);
   return path;
 }
 

@@ -1,8 +1,10 @@
 #include "models/policy_export.h"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "env/environment_spec.h"
+#include "models/observation_settings_record.h"
 #include "models/torchscript_export.h"
 #include "tests/src/test_util.h"
 
@@ -10,7 +12,7 @@ namespace colav {
 namespace {
 
 void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) {
-  ExportPolicy(*model, 1234, path);
+  ExportPolicy(*model, 1234, ObservationSettings{}, path);
   torch::jit::Module loaded = torch::jit::load(path.string());
   torch::NoGradGuard no_grad;
   torch::Tensor obs = torch::rand({6, kObservationSize});
@@ -43,12 +45,38 @@ TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
   ActorCriticOptions options;
   options.extractor.kind = ExtractorKind::kVaeDeep;
   options.extractor.encoder = directory.path() / "encoder.pt";
-  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12}),
+  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12}), ObservationSettings{},
                 options.extractor.encoder);
   ActorCritic model(options);
   ExpectExportMatches(model, directory.path() / "policy.pt");
   torch::jit::Module loaded = torch::jit::load((directory.path() / "policy.pt").string());
   EXPECT_TRUE(loaded.attr("locked").toBool());
+}
+
+TEST(PolicyExportTest, RecordsTheObservationSettingsAndTheirLayout) {
+  testing_util::TemporaryFolder directory;
+  ActorCritic model{ActorCriticOptions{}};
+  for (const ClosenessTransform closeness :
+       {ClosenessTransform::kLinear, ClosenessTransform::kLog}) {
+    const std::filesystem::path path = directory.path() / "policy.pt";
+    ExportPolicy(*model, 1, ObservationSettings{closeness}, path);
+    torch::jit::Module loaded = torch::jit::load(path.string());
+    EXPECT_EQ(RecordedObservationSettings(loaded, path.string()), ObservationSettings{closeness});
+    const std::string layout = loaded.attr("observation_layout").toStringRef();
+    const bool log = closeness == ClosenessTransform::kLog;
+    EXPECT_EQ(layout.find("1 - ln(1+d)/ln(151)") != std::string::npos, log) << layout;
+    EXPECT_EQ(layout.find("1 - d/150") != std::string::npos, !log) << layout;
+  }
+}
+
+TEST(PolicyExportTest, AFileWithoutRecordedSettingsHasNone) {
+  testing_util::TemporaryFolder directory;
+  torch::jit::Module bare("Bare");
+  EXPECT_FALSE(RecordedObservationSettings(bare, "bare.pt").has_value());
+  bare.register_attribute(kObservationSettingsAttribute, c10::StringType::get(),
+                          std::string("env:\n  closeness: cubic\n"));
+  EXPECT_THAT(testing_util::UserErrorMessage([&] { RecordedObservationSettings(bare, "bare.pt"); }),
+              ::testing::HasSubstr("bare.pt: env.closeness"));
 }
 
 }  // namespace

@@ -55,7 +55,7 @@ TEST(ExportEncoder, LoadedModuleGivesTheSameMuAndCarriesItsAttributes) {
   for (const Configuration& configuration : kConfigurations) {
     VaeEncoder encoder(VaeEncoderOptions{configuration.architecture, configuration.latent_dims});
     const std::filesystem::path path = directory.path() / "encoder.pt";
-    ExportEncoder(encoder, path);
+    ExportEncoder(encoder, ObservationSettings{ClosenessTransform::kLog}, path);
 
     torch::jit::Module loaded = torch::jit::load(path.string());
     const torch::Tensor mu = loaded.forward({x}).toTensor();
@@ -64,6 +64,7 @@ TEST(ExportEncoder, LoadedModuleGivesTheSameMuAndCarriesItsAttributes) {
     EXPECT_EQ(loaded.attr("architecture").toStringRef(),
               VaeArchitectureName(configuration.architecture));
     EXPECT_EQ(loaded.attr("latent_dims").toInt(), configuration.latent_dims);
+    EXPECT_EQ(EncoderObservationSettings(path), ObservationSettings{ClosenessTransform::kLog});
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(directory.path()),
                             std::filesystem::directory_iterator()),
               1);  // no temporary file left beside it
@@ -85,7 +86,7 @@ TEST(ExportVae, LoadedModuleReproducesReconstructionMuAndLogvar) {
       parameters["encoder.fc_logvar.bias"].fill_(-80);
     }
     const std::filesystem::path path = directory.path() / "vae.pt";
-    ExportVae(vae, path);
+    ExportVae(vae, ObservationSettings{}, path);
 
     torch::jit::Module loaded = torch::jit::load(path.string());
     const auto outputs = loaded.forward({x}).toTuple()->elements();
@@ -107,7 +108,7 @@ TEST(ExportVae, LoadedModuleReproducesReconstructionMuAndLogvar) {
 TEST(ExportVae, ScriptedForwardSamplesTheLatent) {
   TemporaryFolder directory;
   ConvVae vae(VaeOptions{});
-  ExportVae(vae, directory.path() / "vae.pt");
+  ExportVae(vae, ObservationSettings{}, directory.path() / "vae.pt");
   torch::jit::Module loaded = torch::jit::load((directory.path() / "vae.pt").string());
   const torch::Tensor x = Scans();
   const torch::Tensor first = loaded.forward({x}).toTuple()->elements()[0].toTensor();
@@ -120,7 +121,9 @@ TEST(ExportEncoder, UnwritablePathIsAUserError) {
   const std::filesystem::path not_a_folder = directory.path() / "file";
   std::ofstream(not_a_folder) << "a file, not a folder\n";
   VaeEncoder encoder(VaeEncoderOptions{});
-  EXPECT_THAT(UserErrorMessage([&] { ExportEncoder(encoder, not_a_folder / "encoder.pt"); }),
+  EXPECT_THAT(UserErrorMessage([&] {
+                ExportEncoder(encoder, ObservationSettings{}, not_a_folder / "encoder.pt");
+              }),
               HasSubstr(not_a_folder.string()));
 }
 
@@ -129,7 +132,7 @@ TEST(LoadVaeEncoder, RebuildsTheExportedEncoder) {
   const torch::Tensor x = Scans();
   for (const Configuration& configuration : kConfigurations) {
     VaeEncoder encoder(VaeEncoderOptions{configuration.architecture, configuration.latent_dims});
-    ExportEncoder(encoder, directory.path() / "encoder.pt");
+    ExportEncoder(encoder, ObservationSettings{}, directory.path() / "encoder.pt");
     VaeEncoder loaded = LoadVaeEncoder(directory.path() / "encoder.pt");
     EXPECT_EQ(loaded->options().architecture, configuration.architecture);
     EXPECT_EQ(loaded->options().latent_dims, configuration.latent_dims);
@@ -162,7 +165,8 @@ TEST(LoadVaeEncoder, GarbageFileIsAUserErrorNamingIt) {
 TEST(LoadVaeEncoder, LatentMismatchIsAUserErrorNamingTheParameter) {
   TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "encoder.pt";
-  torch::jit::Module script = ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}));
+  torch::jit::Module script =
+      ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}), ObservationSettings{});
   script.setattr("latent_dims", 5);
   script.save(path.string());
   const std::string message = UserErrorMessage([&] { LoadVaeEncoder(path); });
@@ -175,7 +179,8 @@ TEST(LoadVaeEncoder, LatentMismatchIsAUserErrorNamingTheParameter) {
 TEST(LoadVaeEncoder, ArchitectureMismatchIsAUserErrorNamingTheParameter) {
   TemporaryFolder directory;
   const std::filesystem::path path = directory.path() / "encoder.pt";
-  torch::jit::Module script = ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}));
+  torch::jit::Module script =
+      ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}), ObservationSettings{});
   script.setattr("architecture", std::string("deep"));
   script.save(path.string());
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(path); }),
@@ -192,7 +197,7 @@ TEST(LoadVaeEncoder, OtherTorchScriptFilesAreUserErrors) {
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(directory.path() / "bare.pt"); }),
               HasSubstr("has no attribute 'architecture'"));
 
-  ExportVae(ConvVae(VaeOptions{}), directory.path() / "vae.pt");
+  ExportVae(ConvVae(VaeOptions{}), ObservationSettings{}, directory.path() / "vae.pt");
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(directory.path() / "vae.pt"); }),
               HasSubstr("has no parameter 'convs_0_weight'"));
 }
@@ -214,8 +219,8 @@ TEST(ExportedFiles, LoadInPythonTorch) {
   TemporaryFolder directory;
   torch::manual_seed(13);
   ConvVae vae(VaeOptions{VaeArchitecture::kDeep, 12, DecoderPadding::kCircular});
-  ExportEncoder(vae->encoder(), directory.path() / "encoder.pt");
-  ExportVae(vae, directory.path() / "vae.pt");
+  ExportEncoder(vae->encoder(), ObservationSettings{}, directory.path() / "encoder.pt");
+  ExportVae(vae, ObservationSettings{}, directory.path() / "vae.pt");
 
   const std::filesystem::path script = directory.path() / "check.py";
   std::ofstream(script) << R"(import sys, torch

@@ -26,11 +26,12 @@ std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir) {
 
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
-                    const TrainingCounters& counters, bool keep_policy_copy) {
-  ExportPolicy(model, counters.global_step, run_dir / "policy.pt");
+                    const TrainingCounters& counters, const ObservationSettings& settings,
+                    bool keep_policy_copy) {
+  ExportPolicy(model, counters.global_step, settings, run_dir / "policy.pt");
   if (keep_policy_copy) {
     ExportPolicy(
-        model, counters.global_step,
+        model, counters.global_step, settings,
         run_dir / "checkpoints" / ("policy_" + std::to_string(counters.global_step) + ".pt"));
   }
   torch::serialize::OutputArchive archive;

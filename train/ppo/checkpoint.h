@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "env/observation_settings.h"
 #include "models/actor_critic.h"
 #include "models/adam.h"
 
@@ -28,9 +29,11 @@ struct TrainingCounters {
 /// Path of the training state in a run folder.
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir);
 
+/// `settings` are the observation settings the policy is trained with (recorded in policy.pt).
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
-                    const TrainingCounters& counters, bool keep_policy_copy);
+                    const TrainingCounters& counters, const ObservationSettings& settings,
+                    bool keep_policy_copy);
 
 /// Restores the weights, optimiser and generator in place. A missing state file, or one that does
 /// not fit `model`, is a UserError naming it.

@@ -116,6 +116,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Bool(
           "extractor.locked", [](Run & o) -> auto& { return o.model.extractor.locked; },
           "freeze the pre-trained encoder")
+      .Bool(
+          "extractor.allow_encoder_mismatch",
+          [](Run & o) -> auto& { return o.allow_encoder_mismatch; },
+          "train although the encoder records another closeness transform than env.closeness")
       .Number(
           "extractor.latent_dims", [](Run & o) -> auto& { return o.model.extractor.latent_dims; },
           "latent size the encoder must have", 1)

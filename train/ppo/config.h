@@ -35,6 +35,8 @@ struct PpoRunOptions {
   /// Its seed follows from ppo.seed.
   ActorCriticOptions model;
   EnvironmentConfig env;
+  /// Train on an encoder although it records other observation settings than `env`'s.
+  bool allow_encoder_mismatch = false;
 };
 
 /// The ppo.*, policy.*, extractor.*, train.* and env.* keys. Reading checks that a VAE extractor

@@ -58,6 +58,7 @@ class PpoTrainer {
       : resolved_config_(std::move(resolved_config)),
         run_dir_(std::move(run_dir)),
         options_(options.ppo),
+        observation_settings_(ObservationSettingsOf(options.env)),
         model_(ModelOptions(options.model, resume)),
         updater_(model_, options_),
         generator_(at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(options_.seed, "ppo"))),
@@ -85,7 +86,7 @@ class PpoTrainer {
       counters_.wall_s = previous_wall_s + SecondsSince(start);
       logs_.Flush();
       SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_,
-                     options_.keep_checkpoints);
+                     observation_settings_, options_.keep_checkpoints);
       summary_.checkpoint_s += SecondsSince(checkpoint_start);
     };
     const StopFlag stop_flag;
@@ -149,6 +150,7 @@ class PpoTrainer {
   nlohmann::json resolved_config_;
   std::filesystem::path run_dir_;
   PpoOptions options_;
+  ObservationSettings observation_settings_;  ///< recorded in every policy.pt
   ActorCritic model_;
   PpoUpdater updater_;
   torch::Generator generator_;

@@ -95,8 +95,9 @@ SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, st
   }
   bar.Finish();
 
-  ExportEncoder(trainer.model()->encoder(), seed_dir / "encoder.pt");
-  ExportVae(trainer.model(), seed_dir / "vae.pt");
+  const ObservationSettings scans_settings{options.transform};
+  ExportEncoder(trainer.model()->encoder(), scans_settings, seed_dir / "encoder.pt");
+  ExportVae(trainer.model(), scans_settings, seed_dir / "vae.pt");
   const VaeEvaluation test =
       EvaluateVae(trainer.model(), data.test, options.beta, DeriveSeed(trainer.seed(), "vae.test"),
                   options.evaluation_batch_size);

@@ -44,9 +44,9 @@ bool Has(const std::vector<std::string>& args, const std::vector<std::string>& r
 TEST(JobGraphTest, JobsDependenciesAndArguments) {
   const TemporaryFolder folder;
   const std::vector<StudyJob> jobs = BuildJobGraph(TinySpec(folder), "/s");
-  // data, 1 VAE, 3 x 3 PPO runs, evaluation groups: study ours (linear, log), study reference,
-  // paper ours (linear, log), paper reference.
-  EXPECT_EQ(jobs.size(), 1U + 1U + 9U + 6U);
+  // data, 1 VAE, 3 x 3 PPO runs, a training figure per configuration, one evaluation per
+  // scenario set (study, paper).
+  EXPECT_EQ(jobs.size(), 1U + 1U + 9U + 3U + 2U);
   for (std::size_t i = 0; i < jobs.size(); ++i) {
     for (const std::size_t d : jobs[i].dependencies) EXPECT_LT(d, i) << jobs[i].id;
   }
@@ -60,27 +60,44 @@ TEST(JobGraphTest, JobsDependenciesAndArguments) {
   EXPECT_TRUE(Find(jobs, "ppo/baseline/seed_0").dependencies.empty());
   EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--unlocked"}));
   EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--set", "env.closeness=log"}));
+  const StudyJob& figure = Find(jobs, "figures/training/locked");
+  EXPECT_EQ(figure.program, "plot_training");
+  EXPECT_EQ(figure.dependencies.size(), 3U);
+  EXPECT_TRUE(Has(figure.args, {"--run", "seed_2=/s/ppo/locked/seed_2"}));
+  EXPECT_EQ(figure.complete_marker, "/s/figures/training_locked.png");
 }
 
-TEST(JobGraphTest, EvaluationsGroupModelsByTheirObservationSettings) {
+TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
   const TemporaryFolder folder;
   const std::vector<EvaluationGroup> groups = EvaluationGroups(TinySpec(folder), "/s");
-  ASSERT_EQ(groups.size(), 6U);
-  EXPECT_EQ(groups[0].name, "study-ours");
-  EXPECT_EQ(groups[0].models.size(), 6U);  // locked and baseline, 3 seeds each
+  ASSERT_EQ(groups.size(), 2U);
+  EXPECT_EQ(groups[0].scenario_set, "study");
+  ASSERT_EQ(groups[0].models.size(), 10U);  // 3 configurations x 3 seeds, the reference agent
   EXPECT_EQ(groups[0].models[0], "locked.seed_0");
-  EXPECT_EQ(groups[1].name, "study-ours-log");
-  EXPECT_EQ(groups[1].overrides, Overrides{"env.closeness=log"});
-  EXPECT_EQ(groups[2].name, "study-reference-log");  // from the agent's sidecar
-  EXPECT_EQ(groups[2].models, std::vector<std::string>{"ref.agent"});
-  EXPECT_EQ(groups[3].name, "paper-ours");
-  EXPECT_EQ(groups[3].episodes, 5);
-  EXPECT_EQ(groups[3].seed, 0U);
+  EXPECT_EQ(groups[0].models[3], "log.seed_0");
+  EXPECT_EQ(groups[0].models[9], "ref.agent");
+  EXPECT_EQ(groups[1].scenario_set, "paper");
+  EXPECT_EQ(groups[1].episodes, 5);
+  EXPECT_EQ(groups[1].seed, 0U);
   const std::vector<StudyJob> jobs = BuildJobGraph(TinySpec(folder), "/s");
-  const StudyJob& evaluation = Find(jobs, "eval/study-ours-log");
-  EXPECT_EQ(evaluation.dependencies.size(), 3U);  // only the runs it evaluates
+  const StudyJob& evaluation = Find(jobs, "eval/study");
+  EXPECT_EQ(evaluation.dependencies.size(), 9U);  // every PPO run; the agent file exists
   EXPECT_TRUE(Has(evaluation.args, {"--episodes", "20", "--seed", "1"}));
-  EXPECT_TRUE(Find(jobs, "eval/study-reference-log").dependencies.empty());
+  // Each policy brings its own observation settings: the evaluation sets none.
+  EXPECT_FALSE(Has(evaluation.args, {"--set"}));
+}
+
+TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  const std::size_t without = BuildJobGraph(spec, "/s").size();
+  spec.vae_figures = true;
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  ASSERT_EQ(jobs.size(), without + 1);
+  const StudyJob& figures = Find(jobs, "figures/vae");
+  EXPECT_EQ(figures.program, "vae_figures");
+  EXPECT_TRUE(Has(figures.args, {"--data", "/s/data/scans.h5", "--out", "/s/figures/vae"}));
+  EXPECT_EQ(jobs[figures.dependencies.at(0)].id, "data");
 }
 
 }  // namespace

@@ -32,7 +32,8 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
   torch::randn({10}, generator);
   const TrainingCounters counters{30000, 12, 3, 17, 42.5};
-  SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters, true);
+  SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters,
+                 ObservationSettings{}, true);
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "policy.pt"));
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "checkpoints" / "policy_30000.pt"));
 

@@ -54,7 +54,8 @@ TEST(PpoUpdaterTest, LockedEncoderStaysBitIdenticalWhileAnUnlockedOneChanges) {
   testing_util::TemporaryFolder directory;
   torch::manual_seed(9);
   const std::filesystem::path encoder = directory.path() / "encoder.pt";
-  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kShallow, 12}), encoder);
+  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kShallow, 12}), ObservationSettings{},
+                encoder);
   const PpoOptions options = SmallOptions();
   const RolloutBuffer buffer = SyntheticRollout(options);
   for (const bool locked : {true, false}) {

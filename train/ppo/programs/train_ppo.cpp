@@ -16,6 +16,7 @@
 #include "src/logging.h"
 #include "src/run_folder.h"
 #include "train/ppo/config.h"
+#include "train/ppo/encoder_check.h"
 #include "train/ppo/trainer.h"
 #include "train/ppo/update.h"
 
@@ -49,6 +50,8 @@ int Main(int argc, char** argv) {
   config_flags.AddFlag("--encoder", "extractor.encoder");
   config_flags.AddSwitch("--locked", "extractor.locked", true, "freeze the pre-trained encoder");
   config_flags.AddSwitch("--unlocked", "extractor.locked", false, "fine-tune the encoder");
+  config_flags.AddSwitch("--allow-encoder-mismatch", "extractor.allow_encoder_mismatch", true,
+                         "train although the encoder records another env.closeness");
   config_flags.AddFlag("--steps", "ppo.total_steps");
   config_flags.AddFlag("--envs", "ppo.n_envs");
   config_flags.AddFlag("--seed", "train.seed");
@@ -77,7 +80,10 @@ int Main(int argc, char** argv) {
   const colav::Config config = config_flags.Resolve();
   const colav::PpoRunOptions options = binding.Read(config);
   // A bad extractor setting or encoder file fails here, before the run folder is touched.
-  if (resume.empty()) colav::ActorCritic(options.model);
+  if (resume.empty()) {
+    colav::CheckEncoderObservationSettings(options);
+    colav::ActorCritic(options.model);
+  }
 
   const colav::RunFolder run = colav::RunFolder::Create(run_path);
   colav::InitLogging("train_ppo", run.LogPath(), verbose);

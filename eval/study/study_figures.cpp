@@ -1,0 +1,162 @@
+#include "eval/study/study_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <sstream>
+
+#include "eval/study/job_graph.h"
+#include "src/figures/gnuplot.h"
+#include "src/figures/style.h"
+
+namespace colav {
+namespace {
+
+// The metrics the figures show, in panel order (the paper's table).
+const char* const kFigureMetrics[] = {"progress", "cross_track_error", "duration", "collision"};
+constexpr double kDefaultBeta = 1.0;  // train_vae's vae.beta
+
+const StudyMetric& Metric(const std::string& name) {
+  return *std::find_if(StudyMetrics().begin(), StudyMetrics().end(),
+                       [&](const StudyMetric& m) { return m.name == name; });
+}
+
+const ModelSummary& Summary(const ScenarioSetReport& report, const std::string& name) {
+  return *std::find_if(report.models.begin(), report.models.end(),
+                       [&](const ModelSummary& m) { return m.name == name; });
+}
+
+// The mean of `metric` of each training seed of `config` (in the report's unit).
+std::vector<double> SeedMeans(const StudySpec& spec, const ScenarioSetResults& results,
+                              const std::string& config, const std::string& metric) {
+  std::vector<double> means;
+  for (int k = 0; k < spec.ppo_seeds; ++k) {
+    const std::vector<double>& values = results.models.at(SeedModelName(config, k)).at(metric);
+    double sum = 0.0;
+    for (const double value : values) sum += value;
+    means.push_back(values.empty() ? 0.0 : sum / static_cast<double>(values.size()));
+  }
+  return means;
+}
+
+bool IsConfig(const StudySpec& spec, const std::string& name) {
+  return std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                     [&](const PpoConfigSpec& c) { return c.name == name; });
+}
+
+std::string Estimates(const ScenarioSetReport& report, const std::vector<std::string>& names,
+                      const std::string& metric, const std::map<std::string, double>& position) {
+  std::ostringstream block;
+  for (const std::string& name : names) {
+    const MetricEstimate& e = Summary(report, name).metrics.at(metric);
+    block << position.at(name) << ' ' << e.mean << ' ' << e.ci.low << ' ' << e.ci.high << '\n';
+  }
+  return block.str();
+}
+
+std::string DataBlock(const std::string& name, const std::string& rows) {
+  return "$" + name + " << EOD\n" + (rows.empty() ? "nan nan nan nan\n" : rows) + "EOD\n";
+}
+
+}  // namespace
+
+void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
+                      const ScenarioSetReport& report, const std::string& title,
+                      const std::filesystem::path& png) {
+  std::vector<std::string> ours;
+  std::vector<std::string> references;
+  std::map<std::string, double> row;  // first model on top
+  for (std::size_t m = 0; m < report.models.size(); ++m) {
+    const std::string& name = report.models[m].name;
+    (IsConfig(spec, name) ? ours : references).push_back(name);
+    row[name] = static_cast<double>(report.models.size() - m);
+  }
+  std::ostringstream script;
+  std::string ytics;
+  for (const auto& [name, y] : row) {
+    ytics += (ytics.empty() ? "" : ", ") + GnuplotQuote(GnuplotEnhancedText(name)) +
+             fmt::format(" {}", y);
+  }
+  script << MultiplotLayout(2, 2, GnuplotEnhancedText(title)) << LightGrid()
+         << fmt::format("set yrange [0.5:{}]\nset ytics ({})\nset key bottom right\n",
+                        report.models.size() + 0.5, ytics);
+  for (const char* metric : kFigureMetrics) {
+    std::ostringstream seeds;
+    for (const std::string& config : ours) {
+      for (const double mean : SeedMeans(spec, results, config, metric)) {
+        seeds << mean << ' ' << row.at(config) << '\n';
+      }
+    }
+    script << DataBlock(std::string("ours_") + metric, Estimates(report, ours, metric, row))
+           << DataBlock(std::string("refs_") + metric, Estimates(report, references, metric, row))
+           << DataBlock(std::string("seeds_") + metric, seeds.str()) << "set title "
+           << GnuplotQuote(Metric(metric).label) << "\n"
+           << "plot $seeds_" << metric << " using 1:2 with points pt 6 ps 0.7 "
+           << LineColour("#999999") << " title 'training seeds', $ours_" << metric
+           << " using 2:1:3:4 with xerrorbars pt 7 ps 1.2 lw 2 " << LineColour(FigureColour(0))
+           << " title 'configuration, 95 % CI', $refs_" << metric
+           << " using 2:1:3:4 with xerrorbars pt 9 ps 1.4 lw 2 " << LineColour(FigureColour(1))
+           << " title 'reference agent, 95 % CI'\n";
+  }
+  script << "unset multiplot\n";
+  RenderGnuplotPng(script.str(), png, 1100,
+                   std::max(500, 160 + 2 * 26 * static_cast<int>(report.models.size())));
+}
+
+std::vector<std::pair<double, std::string>> BetaSweep(const StudySpec& spec) {
+  std::map<std::string, std::vector<std::pair<double, std::string>>> by_extractor;
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    if (config.extractor == "baseline" || !config.locked || !config.overrides.empty()) continue;
+    const auto vae = std::find_if(spec.vaes.begin(), spec.vaes.end(),
+                                  [&](const VaeSpec& v) { return v.name == config.vae; });
+    double beta = kDefaultBeta;
+    for (const std::string& assignment : vae->overrides) {
+      if (assignment.rfind("vae.beta=", 0) == 0) beta = std::stod(assignment.substr(9));
+    }
+    by_extractor[config.extractor].emplace_back(beta, config.name);
+  }
+  std::vector<std::pair<double, std::string>> sweep;
+  for (auto& [extractor, points] : by_extractor) {
+    if (points.size() > sweep.size()) sweep = points;
+  }
+  std::sort(sweep.begin(), sweep.end());
+  const bool distinct = std::adjacent_find(sweep.begin(), sweep.end(), [](auto& a, auto& b) {
+                          return a.first == b.first;
+                        }) == sweep.end();
+  if (sweep.size() < 3 || !distinct) return {};
+  return sweep;
+}
+
+void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& results,
+                         const ScenarioSetReport& report,
+                         const std::vector<std::pair<double, std::string>>& sweep,
+                         const std::filesystem::path& png) {
+  std::ostringstream script;
+  script << MultiplotLayout(2, 2,
+                            GnuplotEnhancedText("Beta sweep: " + sweep.front().second + " ... " +
+                                                sweep.back().second))
+         << LightGrid() << "set xlabel 'beta of the VAE'\nset key top right\n";
+  for (const char* metric : kFigureMetrics) {
+    std::ostringstream estimates;
+    std::ostringstream seeds;
+    for (const auto& [beta, config] : sweep) {
+      const MetricEstimate& e = Summary(report, config).metrics.at(metric);
+      estimates << beta << ' ' << e.mean << ' ' << e.ci.low << ' ' << e.ci.high << '\n';
+      for (const double mean : SeedMeans(spec, results, config, metric)) {
+        seeds << beta << ' ' << mean << '\n';
+      }
+    }
+    script << DataBlock(std::string("sweep_") + metric, estimates.str())
+           << DataBlock(std::string("seeds_") + metric, seeds.str()) << "set title "
+           << GnuplotQuote(Metric(metric).label) << "\nplot $seeds_" << metric
+           << " using 1:2 with points pt 6 ps 0.7 " << LineColour("#999999")
+           << " title 'training seeds', $sweep_" << metric
+           << " using 1:2:3:4 with yerrorlines pt 7 lw 2 " << LineColour(FigureColour(0))
+           << " title 'mean over seeds, 95 % CI'\n";
+  }
+  script << "unset multiplot\n";
+  RenderGnuplotPng(script.str(), png, 1000, 800);
+}
+
+}  // namespace colav

@@ -1,0 +1,33 @@
+// The study report's figures (gnuplot PNGs): every model's estimate with its interval and its
+// training seeds, the way rliable draws results of deep RL, and the beta sweep when the study has
+// one.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "eval/study/study_report.h"
+
+namespace colav {
+
+/// One panel per metric (progress, cross-track error, duration, collisions): each model a row with
+/// its estimate and 95 % interval (ScenarioSetReport), our configurations' seed means as dots, the
+/// reference agents in their own colour.
+void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
+                      const ScenarioSetReport& report, const std::string& title,
+                      const std::filesystem::path& png);
+
+/// (beta, configuration) of the study's beta sweep, beta ascending: the locked configurations
+/// without overrides of one extractor whose VAEs differ in vae.beta (1 when not set), when there
+/// are at least three betas. Empty otherwise.
+std::vector<std::pair<double, std::string>> BetaSweep(const StudySpec& spec);
+
+/// Each metric's estimate with its interval and the seed means against the VAE's beta.
+void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& results,
+                         const ScenarioSetReport& report,
+                         const std::vector<std::pair<double, std::string>>& sweep,
+                         const std::filesystem::path& png);
+
+}  // namespace colav
