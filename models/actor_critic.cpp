@@ -86,6 +86,12 @@ void ActorCriticImpl::Initialise() {
       DefaultConvInit(conv, generator);
     }
   }
+  if (options_.extractor.kind != ExtractorKind::kBaseline &&
+      options_.extractor.head == EncoderHead::kReference) {
+    // SB3 initialises the extractor's Linear layers after loading the pre-trained weights.
+    torch::nn::Linear head = features_extractor_->layers().back().linear;
+    InitLinear(head, kTrunkGain, generator);
+  }
   InitTrunk(mlp_extractor_->policy_net, generator);
   InitTrunk(mlp_extractor_->value_net, generator);
   InitLinear(action_net_, kActionGain, generator);

@@ -50,6 +50,16 @@ std::string ExtractorKindName(ExtractorKind kind) {
   throw std::logic_error("unknown ExtractorKind");
 }
 
+EncoderHead ParseEncoderHead(const std::string& name) {
+  if (name == "mu") return EncoderHead::kMu;
+  if (name == "reference") return EncoderHead::kReference;
+  throw UserError("unknown encoder head '" + name + "' (expected mu or reference)");
+}
+
+std::string EncoderHeadName(EncoderHead head) {
+  return head == EncoderHead::kReference ? "reference" : "mu";
+}
+
 std::vector<ConvLayerSpec> ParseConvStack(const std::string& spec) {
   const auto bad = [&spec](const std::string& why) {
     return UserError("bad conv stack '" + spec + "': " + why +
@@ -104,6 +114,7 @@ FeatureExtractorImpl::FeatureExtractorImpl(FeatureExtractorOptions options)
   BuildConvs(EncoderConvLayers(ArchitectureOf(options_.kind)));
   PerceptionLayer head;
   head.linear = torch::nn::Linear(perception_dims_, options_.latent_dims);
+  head.relu = options_.head == EncoderHead::kReference;
   perception_->push_back(head.linear);
   layers_.push_back(head);
   perception_dims_ = options_.latent_dims;
@@ -154,7 +165,9 @@ void FeatureExtractorImpl::LoadPretrainedEncoder() {
   const torch::Tensor scans =
       torch::rand({kEncoderCheckSamples, kNumRays},
                   at::make_generator<at::CPUGeneratorImpl>(kEncoderCheckSeed));
-  const double difference = (Perception(scans) - encoder->Mu(scans)).abs().max().item<double>();
+  const torch::Tensor mu = encoder->Mu(scans);
+  const torch::Tensor expected = layers_.back().relu ? torch::relu(mu) : mu;
+  const double difference = (Perception(scans) - expected).abs().max().item<double>();
   if (!(difference < kEncoderCopyTolerance)) {
     throw std::logic_error("feature extractor does not reproduce the mu of " + file);
   }

@@ -8,6 +8,9 @@
 //                scratch, no activation (reference-learning 6.2, RadarCNN);
 //   vae-shallow  the pre-trained VAE encoder's mu (conv stack + fc_mu), deterministic, with the
 //   vae-deep     encoder's own weights; locked (frozen, excluded from the optimiser) or unlocked.
+//                With head "reference", fc_mu is re-drawn orthogonal (gain sqrt 2, bias 0) and
+//                followed by a ReLU: what the authors' agents really used (reference-learning
+//                6.2: SB3's orthogonal initialisation overwrote the pre-trained fc_mu).
 // The layers are kept as a plain list so the hand-written fast path (actor_critic_fast.h) and
 // the TorchScript export (policy_export.h) can mirror them.
 #pragma once
@@ -29,6 +32,16 @@ enum class ExtractorKind { kBaseline, kVaeShallow, kVaeDeep };
 ExtractorKind ParseExtractorKind(const std::string& name);
 std::string ExtractorKindName(ExtractorKind kind);
 
+/// The last layer of a VAE extractor.
+enum class EncoderHead {
+  kMu,         ///< the pre-trained fc_mu, no activation (the paper's description)
+  kReference,  ///< fc_mu re-drawn orthogonal x sqrt 2, bias 0, then ReLU (the authors' agents)
+};
+
+/// "mu" or "reference"; anything else is a UserError naming the value.
+EncoderHead ParseEncoderHead(const std::string& name);
+std::string EncoderHeadName(EncoderHead head);
+
 /// Parses a conv stack "out:kernel:stride:padding[,out:kernel:stride:padding...]" (input channels
 /// follow from the previous layer, the first takes 1). A malformed spec is a UserError.
 std::vector<ConvLayerSpec> ParseConvStack(const std::string& spec);
@@ -44,6 +57,9 @@ struct FeatureExtractorOptions {
   bool locked = true;
   /// vae-*: the latent size the encoder file must have.
   std::int64_t latent_dims = 12;
+  /// vae-*: the head after the conv stack. The re-drawn weights of kReference come from the
+  /// actor-critic's initialisation (actor_critic.h).
+  EncoderHead head = EncoderHead::kMu;
   /// baseline: its convolution stack (the paper's: one layer 1->1, k45, s15, p15).
   std::vector<ConvLayerSpec> baseline_convs = {{1, 1, 45, 15, 15}};
 };

@@ -16,7 +16,6 @@ namespace colav {
 namespace {
 
 constexpr std::uint64_t kBootstrapSeed = 0;  // fixed: the same results give the same report
-const char* const kBaselineConfig = "baseline";
 
 std::vector<double> Pooled(const std::vector<const ModelEpisodes*>& seeds,
                            const std::string& metric) {
@@ -254,7 +253,8 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
      << " steps; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s)
      << " s.\n";
   for (const auto& [set, results] : sets) {
-    const ScenarioSetReport report = SummariseScenarioSet(spec, results, kBaselineConfig);
+    const ScenarioSetReport report =
+        SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
     json["scenario_sets"][set] = ToJson(report);
     md << "\n## " << (set == "paper" ? "The paper's test: " : "Test: ") << report.episodes
        << " scenarios (master seed " << (set == "paper" ? std::uint64_t{0} : spec.evaluation.seed)

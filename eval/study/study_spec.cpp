@@ -181,8 +181,9 @@ std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
 EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   EvaluationSpec evaluation;
   if (!node) return evaluation;
-  reader.RequireMap(node, "evaluation",
-                    {"episodes", "seed", "paper_episodes", "reference_agents", "paper_results"});
+  reader.RequireMap(
+      node, "evaluation",
+      {"episodes", "seed", "paper_episodes", "reference_agents", "paper_results", "compare_to"});
   if (node["episodes"]) {
     evaluation.episodes =
         static_cast<int>(reader.Integer(node["episodes"], "evaluation.episodes", 1, 100000));
@@ -198,6 +199,9 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   if (node["paper_results"]) {
     evaluation.paper_results =
         ExistingFile(reader, node["paper_results"], "evaluation.paper_results");
+  }
+  if (node["compare_to"]) {
+    evaluation.compare_to = reader.Name(node["compare_to"], "evaluation.compare_to");
   }
   if (const YAML::Node agents = node["reference_agents"]) {
     if (!agents.IsSequence()) reader.Fail("evaluation.reference_agents", "expects a list of files");
@@ -222,6 +226,13 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   ReadPpo(reader, root["ppo"], spec);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
+  const bool compares =
+      std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                  [&](const PpoConfigSpec& c) { return c.name == spec.evaluation.compare_to; });
+  if (root["evaluation"] && root["evaluation"]["compare_to"] && !compares) {
+    reader.Fail("evaluation.compare_to",
+                "'" + spec.evaluation.compare_to + "' is not a PPO configuration of the study");
+  }
   return spec;
 }
 

@@ -19,6 +19,8 @@
 //     paper_episodes: 100                           # the paper's table (master seed 0); 0: none
 //     reference_agents: [../shared/reference-agents/shallow_locked_3m.pt]
 //     paper_results: paper_results.yaml              # the paper's table, printed beside ours
+//     compare_to: baseline                          # the configuration the others are compared
+//     with
 //   vae_figures: true                               # the paper's VAE figures (vae_figures)
 #pragma once
 
@@ -54,6 +56,8 @@ struct EvaluationSpec {
   int paper_episodes = 100;  ///< on master seed 0, for the paper's table; 0 = none
   std::vector<std::filesystem::path> reference_agents;
   std::filesystem::path paper_results;  ///< the paper's table (YAML); empty = none
+  /// The configuration every other one is compared with (probability of improvement).
+  std::string compare_to = "baseline";
 };
 
 struct StudySpec {

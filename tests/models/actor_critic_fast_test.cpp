@@ -13,10 +13,12 @@ namespace {
 
 constexpr int kBatch = 13;  // not a multiple of the vector width: exercises the tails
 
-ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& folder, bool locked) {
+ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& folder, bool locked,
+                           EncoderHead head = EncoderHead::kMu) {
   ActorCriticOptions options;
   options.extractor.kind = kind;
   options.extractor.locked = locked;
+  options.extractor.head = head;
   options.seed = 11;
   if (kind != ExtractorKind::kBaseline) {
     const auto architecture =
@@ -44,12 +46,13 @@ void ExpectClose(const float* fast, const torch::Tensor& reference, double toler
   }
 }
 
-class FastActorCriticTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool>> {};
+class FastActorCriticTest
+    : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, EncoderHead>> {};
 
 TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
-  const auto [kind, locked] = GetParam();
+  const auto [kind, locked, head] = GetParam();
   testing_util::TemporaryFolder directory;
-  ActorCritic model(Options(kind, directory.path(), locked));
+  ActorCritic model(Options(kind, directory.path(), locked, head));
   FastActorCritic fast(model, kBatch);
   EXPECT_EQ(fast.extractor_trainable(), kind == ExtractorKind::kBaseline || !locked);
 
@@ -88,12 +91,15 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticTest,
-                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
-                                           std::tuple{ExtractorKind::kVaeShallow, true},
-                                           std::tuple{ExtractorKind::kVaeShallow, false},
-                                           std::tuple{ExtractorKind::kVaeDeep, true},
-                                           std::tuple{ExtractorKind::kVaeDeep, false}));
+INSTANTIATE_TEST_SUITE_P(
+    Extractors, FastActorCriticTest,
+    ::testing::Values(std::tuple{ExtractorKind::kBaseline, false, EncoderHead::kMu},
+                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kMu},
+                      std::tuple{ExtractorKind::kVaeShallow, false, EncoderHead::kMu},
+                      std::tuple{ExtractorKind::kVaeDeep, true, EncoderHead::kMu},
+                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kMu},
+                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kReference},
+                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kReference}));
 
 TEST(FastActorCriticPredictTest, PredictMatchesTheModel) {
   ActorCritic model(ActorCriticOptions{});

@@ -104,5 +104,38 @@ TEST(ActorCriticTest, PretrainedEncoderKeepsItsWeights) {
   }
 }
 
+// The authors' agents: pre-trained convs, then fc_mu re-drawn orthogonal x sqrt 2 with zero bias
+// and a ReLU (reference-learning 6.2).
+TEST(ActorCriticTest, ReferenceHeadRedrawsFcMuOrthogonalAndAddsARelu) {
+  testing_util::TemporaryFolder directory;
+  torch::manual_seed(4);
+  VaeEncoder encoder(VaeEncoderOptions{VaeArchitecture::kShallow, 12});
+  ExportEncoder(encoder, ObservationSettings{}, directory.path() / "encoder.pt");
+  ActorCriticOptions options;
+  options.extractor.kind = ExtractorKind::kVaeShallow;
+  options.extractor.encoder = directory.path() / "encoder.pt";
+  options.extractor.head = EncoderHead::kReference;
+  ActorCritic model(options);
+  const auto source = encoder->named_parameters();
+  const auto target = model->features_extractor()->named_parameters();
+  EXPECT_TRUE(torch::equal(target["perception.0.weight"], source["convs.0.weight"]));
+  const torch::Tensor w = target["perception.1.weight"];
+  EXPECT_FALSE(torch::allclose(w, source["fc_mu.weight"]));
+  EXPECT_TRUE(torch::allclose(torch::matmul(w, w.t()), 2.0 * torch::eye(12), 1e-5, 1e-5));
+  EXPECT_EQ(target["perception.1.bias"].abs().max().item<float>(), 0.0f);
+  EXPECT_FALSE(w.requires_grad());  // locked: the random map stays frozen
+  const torch::Tensor scans = torch::rand({64, kNumRays});
+  const torch::Tensor features = model->features_extractor()->Perception(scans);
+  EXPECT_GE(features.min().item<float>(), 0.0f);
+  // The ReLU of the orthogonal map of the conv output, by hand.
+  const torch::Tensor conv = encoder->Features(scans);
+  EXPECT_TRUE(torch::allclose(features, torch::relu(torch::matmul(conv, w.t())), 1e-5, 1e-6));
+  // The same seed draws the same map; the paper's head keeps fc_mu.
+  options.extractor.head = EncoderHead::kMu;
+  EXPECT_TRUE(torch::equal(
+      ActorCritic(options)->features_extractor()->named_parameters()["perception.1.weight"],
+      source["fc_mu.weight"]));
+}
+
 }  // namespace
 }  // namespace colav

@@ -51,6 +51,9 @@ TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
   ExpectExportMatches(model, directory.path() / "policy.pt");
   torch::jit::Module loaded = torch::jit::load((directory.path() / "policy.pt").string());
   EXPECT_TRUE(loaded.attr("locked").toBool());
+  options.extractor.head = EncoderHead::kReference;  // the ReLU after the head is exported too
+  ActorCritic reference(options);
+  ExpectExportMatches(reference, directory.path() / "reference.pt");
 }
 
 TEST(PolicyExportTest, RecordsTheObservationSettingsAndTheirLayout) {

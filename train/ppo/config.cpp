@@ -87,6 +87,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Number(
           "ppo.vf_coef", [](Run & o) -> auto& { return o.ppo.loss.vf_coef; },
           "value loss coefficient", 0.0)
+      .Bool(
+          "ppo.timeouts_terminal", [](Run & o) -> auto& { return o.ppo.timeouts_terminal; },
+          "end a timed-out episode's return like a terminal state (the reference) instead of "
+          "bootstrapping it with V(final observation) (SB3)")
       .Number(
           "ppo.max_grad_norm", [](Run & o) -> auto& { return o.ppo.max_grad_norm; },
           "global gradient-norm clip", 0.0)
@@ -116,6 +120,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Bool(
           "extractor.locked", [](Run & o) -> auto& { return o.model.extractor.locked; },
           "freeze the pre-trained encoder")
+      .Coded("extractor.head", [](Run & o) -> auto& { return o.model.extractor.head; },
+             "vae-*: the pre-trained fc_mu (mu), or fc_mu re-drawn orthogonal x sqrt 2 with a "
+             "ReLU, as the authors' agents had it (reference)",
+             TextCodec<EncoderHead>{EncoderHeadName, ParseEncoderHead}, {"mu", "reference"})
       .Bool(
           "extractor.allow_encoder_mismatch",
           [](Run & o) -> auto& { return o.allow_encoder_mismatch; },

@@ -21,6 +21,9 @@ struct PpoOptions {
   double gamma = 0.999;
   double gae_lambda = 0.98;
   double max_grad_norm = 0.5;
+  /// Time-outs end the return like a terminal state (the reference's training) instead of being
+  /// bootstrapped with gamma * V(final observation) (Stable-Baselines3's rule).
+  bool timeouts_terminal = false;
   PpoLossOptions loss;
   AdamOptions adam;
   std::int64_t checkpoint_interval = 30'000;  ///< steps between checkpoints

@@ -11,9 +11,14 @@ const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
 
 }  // namespace
 
+bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeouts_terminal) {
+  return truncated && !terminated && !timeouts_terminal;
+}
+
 RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
-                                   std::uint64_t env_seed)
+                                   std::uint64_t env_seed, bool timeouts_terminal)
     : env_seed_(env_seed),
+      timeouts_terminal_(timeouts_terminal),
       env_(config, n_envs, threads, env_seed),
       episode_counts_(n_envs, 0),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
@@ -60,7 +65,8 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     for (int e = 0; e < N; ++e) {
       buffer.rewards(t)[e] = env_.rewards()[e];
       buffer.dones(t)[e] = env_.terminated()[e] || env_.truncated()[e];
-      buffer.truncated(t)[e] = env_.truncated()[e];
+      buffer.bootstrapped(t)[e] = BootstrapsFromFinalObservation(
+          env_.terminated()[e] != 0, env_.truncated()[e] != 0, timeouts_terminal_);
       if (const auto& episode = env_.finished_episodes()[e]) {
         finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, episode_counts_[e]++), *episode});
       }
@@ -77,7 +83,7 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
   const int N = env_.num_envs();
   for (int e = 0; e < N; ++e) {
     buffer.final_values(t)[e] = 0.0f;
-    if (!env_.truncated()[e]) continue;
+    if (buffer.bootstrapped(t)[e] == 0) continue;
     // Rare (one step in 2000 per world): value the one row on its own.
     policy.Predict(env_.final_observations() + static_cast<std::ptrdiff_t>(e) * kObservationSize, 1,
                    scratch_means_.data(), scratch_values_.data());

@@ -1,7 +1,7 @@
 // Collects PPO rollouts from the batched environment (SB3 collect_rollouts, reference-learning
 // 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] for the environment
 // only (the buffer keeps the unclipped sample and its log-probability), and a truncated episode's
-// final observation is valued for bootstrapping.
+// final observation is valued for bootstrapping (BootstrapsFromFinalObservation).
 #pragma once
 
 #include <torch/torch.h>
@@ -25,11 +25,19 @@ struct FinishedEpisode {
   EpisodeMetrics metrics;
 };
 
+/// Whether the return of an episode's last step continues with gamma * V(final observation): only
+/// for an episode cut by the step limit. One that also terminated on that step (a collision on its
+/// last allowed step) does not, as in Stable-Baselines3's vector environments, whose
+/// "TimeLimit.truncated" is truncated and not terminated. With `timeouts_terminal` (the reference
+/// training, whose time-outs end episodes like a terminal state) none does.
+bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeouts_terminal);
+
 class RolloutCollector {
  public:
-  /// n_envs worlds; env_seed determines every scenario they will play.
-  RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
-                   std::uint64_t env_seed);
+  /// n_envs worlds; env_seed determines every scenario they will play. `timeouts_terminal`: see
+  /// BootstrapsFromFinalObservation.
+  RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads, std::uint64_t env_seed,
+                   bool timeouts_terminal);
 
   /// Called after every environment step with the episodes that just ended; returning false stops
   /// the rollout early.
@@ -48,6 +56,7 @@ class RolloutCollector {
   void ValueFinalObservations(FastActorCritic& policy, int t, RolloutBuffer& buffer);
 
   std::uint64_t env_seed_;
+  bool timeouts_terminal_;
   BatchedEnvironment env_;
   std::vector<std::uint64_t> episode_counts_;
   std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;

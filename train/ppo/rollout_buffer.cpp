@@ -16,7 +16,7 @@ RolloutBuffer::RolloutBuffer(int num_steps, int num_envs)
       rewards_(size()),
       final_values_(size()),
       dones_(size()),
-      truncated_(size()),
+      bootstrapped_(size()),
       last_values_(num_envs),
       advantages_(size()),
       returns_(size()) {}
@@ -30,7 +30,7 @@ void RolloutBuffer::ComputeReturnsAndAdvantages(double gamma, double lambda) {
   input.rewards = rewards_.data();
   input.values = values_.data();
   input.dones = dones_.data();
-  input.truncated = truncated_.data();
+  input.bootstrapped = bootstrapped_.data();
   input.final_values = final_values_.data();
   input.last_values = last_values_.data();
   ComputeGae(input, advantages_.data(), returns_.data());

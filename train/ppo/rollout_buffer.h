@@ -26,7 +26,7 @@ class RolloutBuffer {
   float* values(int t) { return &values_[Offset(t, 1)]; }
   float* rewards(int t) { return &rewards_[Offset(t, 1)]; }
   std::uint8_t* dones(int t) { return &dones_[Offset(t, 1)]; }
-  std::uint8_t* truncated(int t) { return &truncated_[Offset(t, 1)]; }
+  std::uint8_t* bootstrapped(int t) { return &bootstrapped_[Offset(t, 1)]; }
   float* final_values(int t) { return &final_values_[Offset(t, 1)]; }
   /// V of the observations after the last step, one per world.
   float* last_values() { return last_values_.data(); }
@@ -53,7 +53,7 @@ class RolloutBuffer {
   int num_steps_;
   int num_envs_;
   std::vector<float> observations_, actions_, log_probs_, values_, rewards_, final_values_;
-  std::vector<std::uint8_t> dones_, truncated_;
+  std::vector<std::uint8_t> dones_, bootstrapped_;
   std::vector<float> last_values_, advantages_, returns_;
 };
 

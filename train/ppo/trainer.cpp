@@ -66,7 +66,8 @@ class PpoTrainer {
                          : TrainingCounters{}),
         collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
                    // A resumed session plays new scenarios, reproducibly.
-                   DeriveSeed(options_.seed, "worlds", counters_.global_step)),
+                   DeriveSeed(options_.seed, "worlds", counters_.global_step),
+                   options_.timeouts_terminal),
         logs_(run_dir_, resume ? std::optional<std::int64_t>(counters_.global_step) : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs) {
     updater_.set_n_updates(counters_.n_updates);

@@ -50,6 +50,21 @@ TEST(StudySpecTest, ReadsEverySection) {
   EXPECT_EQ(spec.evaluation.episodes, 20);
   EXPECT_EQ(spec.evaluation.seed, 4U);
   EXPECT_EQ(spec.evaluation.paper_episodes, 0);
+  EXPECT_EQ(spec.evaluation.compare_to, "baseline");
+  EXPECT_FALSE(spec.vae_figures);
+}
+
+TEST(StudySpecTest, ShippedStudiesAreValid) {
+  for (const char* name : {"paper", "ablation"}) {
+    const StudySpec spec = LoadStudySpec(std::filesystem::path(COLAV_SOURCE_DIR) / "studies" /
+                                         (name + std::string(".yaml")));
+    EXPECT_EQ(spec.ppo_seeds, 5) << name;
+    EXPECT_EQ(spec.evaluation.episodes, 1000) << name;
+    EXPECT_EQ(spec.evaluation.reference_agents.size(), 3U) << name;
+  }
+  EXPECT_EQ(LoadStudySpec(std::filesystem::path(COLAV_SOURCE_DIR) / "studies" / "ablation.yaml")
+                .evaluation.compare_to,
+            "current");
 }
 
 TEST(StudySpecTest, ShippedQuickstartStudyIsValid) {
@@ -86,6 +101,8 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"ppo: {configs: {a: {}}}\ncolour: red", "colour"},
       {"ppo: {configs: {'a/b': {}}}", "ppo.configs.a/b"},
       {"vaes: {s: {}}", "ppo"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {compare_to: b}", "evaluation.compare_to"},
+      {"ppo: {configs: {a: {}}}\nvae_figures: often", "vae_figures"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });

@@ -25,7 +25,7 @@ TEST(GaeTest, HandComputedRolloutWithATerminationAndATruncation) {
   input.rewards = rewards.data();
   input.values = values.data();
   input.dones = dones.data();
-  input.truncated = truncated.data();
+  input.bootstrapped = truncated.data();
   input.final_values = final_values.data();
   input.last_values = last_values.data();
   std::vector<float> advantages(8), returns(8);

@@ -35,7 +35,7 @@ RolloutBuffer SyntheticRollout(const PpoOptions& options) {
       buffer.values(t)[e] = 0.0f;
       buffer.rewards(t)[e] = torch::randn({}).item<float>();
       buffer.dones(t)[e] = 0;
-      buffer.truncated(t)[e] = 0;
+      buffer.bootstrapped(t)[e] = 0;
       buffer.final_values(t)[e] = 0.0f;
     }
   }
