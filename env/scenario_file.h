@@ -8,8 +8,9 @@
 
 namespace colav {
 
-/// Reads and validates a scenario file; UserError naming the file and key on any problem
-/// (missing key, wrong type, negative radius, fewer than 2 waypoints, ...).
+/// Reads and validates a scenario file; UserError naming the file and key on any problem (missing,
+/// unknown or duplicate key, wrong type, a number that is not finite or outside its plausible
+/// range, such as a start faster than the vessel model integrates or a path over 100 km).
 Scenario LoadScenarioFile(const std::filesystem::path& path);
 
 /// The scenario as scenario-file YAML (full double precision).

@@ -2,9 +2,11 @@
 
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace colav {
 namespace {
@@ -24,6 +26,13 @@ void AppendRange(std::string& out, double range) {
   if (text.back() == '.') text.pop_back();
   out += ',';
   out += text;
+}
+
+// `text` without the spaces around it ("0.5, -1" has a space after the comma).
+std::string Trimmed(const std::string& text) {
+  const std::size_t first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
 }  // namespace
@@ -63,15 +72,16 @@ std::vector<std::array<double, kActionSize>> LoadActionsFile(const std::filesyst
   for (int number = 2; std::getline(in, line); ++number) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty()) continue;
-    std::array<double, kActionSize> action{};
-    char separator = 0;
-    std::istringstream fields(line);
-    if (!(fields >> action[0] >> separator >> action[1]) || separator != ',' ||
-        !(fields >> std::ws).eof()) {
+    const std::size_t comma = line.find(',');
+    const std::optional<double> a0 = ParseFiniteNumber(Trimmed(line.substr(0, comma)));
+    const std::optional<double> a1 = comma == std::string::npos
+                                         ? std::nullopt
+                                         : ParseFiniteNumber(Trimmed(line.substr(comma + 1)));
+    if (!a0 || !a1) {
       throw UserError(path.string() + ": line " + std::to_string(number) +
-                      ": expected two numbers 'a0,a1', got '" + line + "'");
+                      ": expected two finite numbers 'a0,a1', got '" + line + "'");
     }
-    actions.push_back(action);
+    actions.push_back({*a0, *a1});
   }
   return actions;
 }

@@ -86,6 +86,9 @@ torch::Tensor StoredParameter(const torch::jit::Module& script, const std::strin
             << " encoder with latent_dims " << options.latent_dims;
     throw UserError(message.str());
   }
+  if (!torch::isfinite(stored).all().item<bool>()) {
+    throw UserError(file + ": parameter '" + name + "' holds NaN or infinite values");
+  }
   return stored;
 }
 

@@ -57,10 +57,10 @@ int RunProgram(const std::string& program, int argc, char** argv,
     std::cerr << program << ": error: " << FirstLine(e.what()) << '\n';
     return 2;
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() != 0) {  // --help has been printed by ParseCommandLine
-      std::cerr << program << ": error: " << FirstLine(e.what()) << " (see --help)\n";
-    }
-    return e.get_exit_code();
+    if (e.get_exit_code() == 0) return 0;  // --help, printed by ParseCommandLine
+    // A bad command line is bad input like any other: status 2, whatever CLI11's own code.
+    std::cerr << program << ": error: " << FirstLine(e.what()) << " (see --help)\n";
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << program << ": internal error: " << FirstLine(e.what()) << '\n';
     return 1;
@@ -130,11 +130,24 @@ CLI::Option* ConfigFlags::AddSwitch(const std::string& flag, const std::string& 
   return option;
 }
 
+void ConfigFlags::RequireCompatibleSwitches() const {
+  std::map<std::string, const Shortcut*> given;  // key -> the first switch given for it
+  for (const Shortcut& shortcut : shortcuts_) {
+    if (shortcut.switch_value.empty() || shortcut.option->count() == 0) continue;
+    const auto [first, inserted] = given.emplace(shortcut.key, &shortcut);
+    if (!inserted && first->second->switch_value != shortcut.switch_value) {
+      throw UserError(first->second->option->get_name() + " and " + shortcut.option->get_name() +
+                      " exclude each other");
+    }
+  }
+}
+
 Config ConfigFlags::Resolve() const {
+  RequireCompatibleSwitches();
   const std::string config_path =
       config_option_->count() > 0 ? config_option_->results().back() : "";
   Config config = Config::Load(schema_, config_path, set_option_->results());
-  // Shortcut flags in command-line order, so that the last of --locked / --unlocked wins.
+  // Shortcut flags in command-line order: the last of two --steps wins.
   std::map<const CLI::Option*, std::size_t> occurrences;
   for (const CLI::Option* option : app_.parse_order()) {
     const auto shortcut = std::find_if(shortcuts_.begin(), shortcuts_.end(),

@@ -31,10 +31,10 @@ class Option;
 namespace colav {
 
 /// Runs `body(argc, argv)` and returns its exit status, turning escaping exceptions into one line
-/// on stderr: colav::UserError -> "<program>: error: <message>", status 2; CLI::ParseError ->
-/// "<program>: error: <message>" with CLI11's exit code (help: status 0, nothing printed here);
-/// anything else -> "<program>: internal error: <message>", status 1. Only the first line of a
-/// message is printed (LibTorch errors append a backtrace).
+/// on stderr: colav::UserError and CLI::ParseError (a bad command line) -> "<program>: error:
+/// <message>", status 2 (--help: status 0, nothing printed here); anything else -> "<program>:
+/// internal error: <message>", status 1, which is a bug. Only the first line of a message is
+/// printed (LibTorch errors append a backtrace).
 int RunProgram(const std::string& program, int argc, char** argv,
                const std::function<int(int, char**)>& body);
 
@@ -58,7 +58,8 @@ class ConfigFlags {
 
   /// Adds `flag VALUE` (e.g. "--steps") meaning --set key=VALUE, documented by the key's doc.
   CLI::Option* AddFlag(const std::string& flag, const std::string& key);
-  /// Adds a flag without value that sets bool `key` to `value` (e.g. --locked / --unlocked).
+  /// Adds a flag without value that sets bool `key` to `value` (e.g. --locked / --unlocked); two
+  /// switches setting the same key to different values exclude each other.
   CLI::Option* AddSwitch(const std::string& flag, const std::string& key, bool value,
                          const std::string& doc);
 
@@ -78,6 +79,9 @@ class ConfigFlags {
   CLI::Option* config_option_;
   CLI::Option* set_option_;
   std::vector<Shortcut> shortcuts_;
+
+  /// UserError when switches given together set one key to different values.
+  void RequireCompatibleSwitches() const;
 };
 
 /// The configuration as a file for --config: a comment naming the running program, then

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -13,6 +12,7 @@
 #include <utility>
 
 #include "src/error.h"
+#include "src/number_text.h"
 #include "src/yaml_file.h"
 
 namespace colav {
@@ -55,17 +55,6 @@ std::string FormatValue(const ConfigValue& value) {
     default:
       return "'" + std::get<std::string>(value) + "'";
   }
-}
-
-// "[1, 1000]", "[0, inf)": the declared range, with unbounded ends shown as infinite.
-template <typename Number>
-std::string RangeText(Number min, Number max) {
-  // Unbounded ends are declared as the extreme values: -inf/inf for doubles, min/max for ints.
-  using Limits = std::numeric_limits<Number>;
-  constexpr Number kLowest = Limits::has_infinity ? -Limits::infinity() : Limits::lowest();
-  constexpr Number kHighest = Limits::has_infinity ? Limits::infinity() : Limits::max();
-  return (min == kLowest ? std::string("(-inf") : fmt::format("[{}", min)) + ", " +
-         (max == kHighest ? std::string("inf)") : fmt::format("{}]", max));
 }
 
 // The declared range of a number key ("" when unbounded) or its choices.
@@ -113,37 +102,14 @@ std::string Trim(const std::string& text) {
   return text.substr(first, text.find_last_not_of(" \t") - first + 1);
 }
 
-std::optional<double> ParseDouble(const std::string& text) {
-  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;  // from_chars rejects '+'
-  const char* end = text.data() + text.size();
-  double value = 0.0;
-  const auto result = std::from_chars(text.data() + start, end, value);
-  if (result.ec != std::errc() || result.ptr != end || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
-// Integers, also in exponent notation ("3e6" steps) as long as the value is a whole number that a
-// double represents exactly; "3.5" is rejected.
-std::optional<std::int64_t> ParseInt(const std::string& text) {
-  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;
-  const char* end = text.data() + text.size();
-  std::int64_t value = 0;
-  const auto result = std::from_chars(text.data() + start, end, value);
-  if (result.ec == std::errc() && result.ptr == end) return value;
-  constexpr double kExactLimit = 9007199254740992.0;  // 2^53
-  const std::optional<double> real = ParseDouble(text);
-  if (!real || std::floor(*real) != *real || std::fabs(*real) > kExactLimit) return std::nullopt;
-  return static_cast<std::int64_t>(*real);
-}
-
 // The value `text` spells for a key of type `type_index`, or nullopt.
 std::optional<ConfigValue> ParseText(std::size_t type_index, const std::string& text) {
   switch (type_index) {
     case kDouble:
-      if (const auto real = ParseDouble(text)) return *real;
+      if (const auto real = ParseFiniteNumber(text)) return *real;
       return std::nullopt;
     case kInt:
-      if (const auto integer = ParseInt(text)) return *integer;
+      if (const auto integer = ParseWholeNumber(text)) return *integer;
       return std::nullopt;
     case kBool:
       if (text == "true" || text == "false") return text == "true";

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "src/error.h"
+#include "src/number_text.h"
 
 namespace colav {
 namespace {
@@ -28,7 +29,7 @@ std::string Where(const CsvTable& table, std::size_t row) {
 UserError NotANumber(const CsvTable& table, std::size_t row, const std::string& column,
                      const std::string& field) {
   return UserError(Where(table, row) + ": column '" + column + "': '" + field +
-                   "' is not a number");
+                   "' is not a finite number");
 }
 
 }  // namespace
@@ -68,17 +69,9 @@ std::vector<double> NumericColumn(const CsvTable& table, const std::string& name
   values.reserve(table.rows.size());
   for (std::size_t r = 0; r < table.rows.size(); ++r) {
     const std::string& field = table.rows[r][index];
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-      value = std::stod(field, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != field.size()) {
-      throw NotANumber(table, r, name, field);
-    }
-    values.push_back(value);
+    const std::optional<double> value = ParseFiniteNumber(field);
+    if (!value) throw NotANumber(table, r, name, field);
+    values.push_back(*value);
   }
   return values;
 }

@@ -20,7 +20,7 @@ struct CsvTable {
 CsvTable ReadCsvTable(const std::filesystem::path& path);
 
 /// The values of column `name`; UserError naming the file and column when it is absent, or the
-/// file, line and column when a field is not a number.
+/// file, line and column when a field is not a finite number (NaN and infinities included).
 std::vector<double> NumericColumn(const CsvTable& table, const std::string& name);
 
 }  // namespace colav

@@ -3,12 +3,33 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
 #include "src/error.h"
 
 namespace colav {
+namespace {
+
+// yaml-cpp keeps both entries of a key given twice in one map, and readers would silently take
+// one of them: a duplicate is an error naming the file, the line and the key.
+void RejectDuplicateKeys(const YAML::Node& node, const std::string& name) {
+  if (node.IsSequence()) {
+    for (const YAML::Node& item : node) RejectDuplicateKeys(item, name);
+  }
+  if (!node.IsMap()) return;
+  std::set<std::string> keys;
+  for (const auto& item : node) {
+    if (item.first.IsScalar() && !keys.insert(item.first.Scalar()).second) {
+      throw UserError(name + ": line " + std::to_string(item.first.Mark().line + 1) +
+                      ": duplicate key '" + item.first.Scalar() + "'");
+    }
+    RejectDuplicateKeys(item.second, name);
+  }
+}
+
+}  // namespace
 
 YAML::Node LoadYamlFile(const std::filesystem::path& path) {
   const std::string name = path.string();
@@ -18,13 +39,16 @@ YAML::Node LoadYamlFile(const std::filesystem::path& path) {
   if (!file) throw UserError(name + ": cannot read (" + std::strerror(errno) + ")");
   std::stringstream text;
   text << file.rdbuf();
+  YAML::Node root;
   try {
-    return YAML::Load(text.str());
+    root = YAML::Load(text.str());
   } catch (const YAML::Exception& e) {
     // yaml-cpp's marks count from 0; editors count from 1.
     throw UserError(name + ": malformed YAML at line " + std::to_string(e.mark.line + 1) +
                     ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
+  RejectDuplicateKeys(root, name);
+  return root;
 }
 
 }  // namespace colav

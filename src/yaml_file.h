@@ -7,8 +7,8 @@
 
 namespace colav {
 
-/// Parses the YAML file at `path`. A missing, unreadable or malformed file is a colav::UserError
-/// naming the file (and, for malformed YAML, the line and column).
+/// Parses the YAML file at `path`. A missing, unreadable or malformed file, or a key given twice
+/// in one map, is a colav::UserError naming the file (and the line).
 YAML::Node LoadYamlFile(const std::filesystem::path& path);
 
 }  // namespace colav

@@ -82,8 +82,9 @@ int main(int argc, char** argv) {
     app.set_help_flag();
     const colav::ConfigFlags config_flags(app, colav::ConfigSchema());
     colav::ParseCommandLine(app, argc, argv);
+    config_flags.Resolve();  // no keys: rejects any in --set or --config
     benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;  // bad input, as everywhere
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();
     return 0;

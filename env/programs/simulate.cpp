@@ -2,6 +2,7 @@
 // (shared/spec/interfaces.md), optionally a picture of the scene.
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <limits>
 
 #include "env/environment.h"
 #include "env/environment_config.h"
@@ -12,9 +13,21 @@
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
+#include "src/number_flag.h"
+#include "src/output_path.h"
 
 namespace colav {
 namespace {
+
+// The scenario of --scenario or --training-seed.
+Scenario ChosenScenario(const std::string& scenario_path, const CLI::Option& seed_option,
+                        std::uint64_t training_seed) {
+  if (scenario_path.empty() && seed_option.count() == 0) {
+    throw UserError("give a scenario: --scenario FILE.yaml or --training-seed S");
+  }
+  return seed_option.count() > 0 ? TrainingScenarioGenerator().Make(training_seed)
+                                 : LoadScenarioFile(scenario_path);
+}
 
 int Simulate(int argc, char** argv) {
   CLI::App app{
@@ -30,8 +43,9 @@ int Simulate(int argc, char** argv) {
   std::string save_scenario_path;
   auto* scenario_option = app.add_option("--scenario", scenario_path, "scenario file (YAML)");
   auto* seed_option =
-      app.add_option("--training-seed", training_seed,
-                     "instead of --scenario: the paper's training world of this seed");
+      AddNumberFlag<std::uint64_t>(app, "--training-seed", training_seed,
+                                   "instead of --scenario: the paper's training world of this seed",
+                                   0, std::numeric_limits<std::uint64_t>::max());
   scenario_option->excludes(seed_option);
   app.add_option("--save-scenario", save_scenario_path,
                  "also write the scenario as a scenario file (e.g. to edit a training world)");
@@ -44,16 +58,13 @@ int Simulate(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const EnvironmentConfig env_config = binding.Read(config_flags.Resolve());
 
-  if (scenario_path.empty() && seed_option->count() == 0) {
-    throw UserError("give a scenario: --scenario FILE.yaml or --training-seed S");
-  }
-  const Scenario scenario = seed_option->count() > 0
-                                ? TrainingScenarioGenerator().Make(training_seed)
-                                : LoadScenarioFile(scenario_path);
-  if (!save_scenario_path.empty()) {
-    WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
-  }
+  // Every input and output path is checked before anything is written.
+  const Scenario scenario = ChosenScenario(scenario_path, *seed_option, training_seed);
   const auto actions = LoadActionsFile(actions_path);
+  RequireWritableFile(trace_path, "--out");
+  if (!save_scenario_path.empty()) RequireWritableFile(save_scenario_path, "--save-scenario");
+  if (!plot_path.empty()) RequireWritableFile(plot_path, "--plot");
+
   Environment env(env_config, std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
   env.Reset(0, observation.data());
@@ -66,6 +77,9 @@ int Simulate(int argc, char** argv) {
     track.positions.emplace_back(env.world().vessel().head<2>());
     track.collision = result.collision;
     if (result.terminated || result.truncated) break;
+  }
+  if (!save_scenario_path.empty()) {
+    WriteTextFileAtomically(save_scenario_path, ScenarioToYaml(scenario));
   }
   WriteTextFileAtomically(trace_path, trace);
   if (!plot_path.empty()) {

@@ -1,5 +1,6 @@
 // plot_beta_sweep: final test metrics against the VAE's beta, from evaluate summaries.
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,22 +10,18 @@
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
+#include "src/number_text.h"
+#include "src/output_path.h"
 
 namespace colav {
 namespace {
 
 double ParseBeta(const std::string& text, const std::string& argument) {
-  std::size_t used = 0;
-  double beta = 0.0;
-  try {
-    beta = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size() || beta < 0.0) {
+  const std::optional<double> beta = ParseFiniteNumber(text);
+  if (!beta || *beta < 0.0) {
     throw UserError("--model '" + argument + "': beta '" + text + "' is not a number >= 0");
   }
-  return beta;
+  return *beta;
 }
 
 const ModelSummary& FindModel(const std::vector<ModelSummary>& models, const std::string& name,
@@ -54,6 +51,9 @@ int PlotBetaSweepProgram(int argc, char** argv) {
   app.add_option("--title", title, "figure title");
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
+  config_flags.Resolve();  // no keys: rejects any in --set or --config
+  RequireWritableFile(out, "--out");
+  if (!table.empty()) RequireWritableFile(table, "--table");
 
   std::vector<ModelSummary> models;
   for (const std::string& summary : summaries) {

@@ -7,6 +7,8 @@
 #include "eval/labelled_argument.h"
 #include "eval/training_curves.h"
 #include "src/cli.h"
+#include "src/number_flag.h"
+#include "src/output_path.h"
 
 namespace colav {
 namespace {
@@ -20,15 +22,18 @@ int PlotTraining(int argc, char** argv) {
   std::vector<std::string> run_arguments;
   std::string out;
   std::string title = "Training";
-  std::size_t window = 100;
+  std::uint64_t window = 100;
   app.add_option("--run", run_arguments,
                  "[LABEL=]RUN_DIR of train_ppo, repeatable (label: folder name)")
       ->required();
   app.add_option("--out", out, "PNG to write")->required();
   app.add_option("--title", title, "figure title");
-  app.add_option("--window", window, "episodes in the rolling window")->check(CLI::PositiveNumber);
+  AddNumberFlag<std::uint64_t>(app, "--window", window, "episodes in the rolling window", 1,
+                               1'000'000);
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
+  config_flags.Resolve();  // no keys: rejects any in --set or --config
+  RequireWritableFile(out, "--out");
 
   std::vector<TrainingRun> runs;
   for (const std::string& argument : run_arguments) {

@@ -9,6 +9,7 @@
 #include "env/scenario_file.h"
 #include "env/training_scenario.h"
 #include "env/vessel_model.h"
+#include "env/world.h"
 #include "src/error.h"
 
 namespace colav {
@@ -93,7 +94,7 @@ TEST_F(ScenarioFileTest, BadFilesGiveOneLineErrorsNamingTheKey) {
                            "heading: 0}\nstatic_obstacles:\n  - {position: [5, 5], radius: -3}\n"),
                "key 'static_obstacles[0].radius' must be positive");
   expect_error("path: {waypoints: [[0, 0], [0, 0]]}\nvessel: {position: [0, 0], heading: 0}\n",
-               "equal consecutive waypoints");
+               "key 'path.waypoints' has waypoints 0 and 1 only 0 m apart");
   expect_error("path: [unclosed\n", "malformed YAML");
   EXPECT_NE(std::string(ErrorOf(kValid)).find("no error"), std::string::npos);
   try {
@@ -101,6 +102,50 @@ TEST_F(ScenarioFileTest, BadFilesGiveOneLineErrorsNamingTheKey) {
     FAIL() << "expected an error";
   } catch (const UserError& e) {
     EXPECT_EQ(std::string(e.what()), "/nonexistent/scenario.yaml: no such file");
+  }
+}
+
+// Values a simulation cannot run from (NaN after a step, a path polyline of 10^13 vertices) are
+// refused with the key; so are keys the format does not have and keys given twice.
+TEST_F(ScenarioFileTest, ImplausibleValuesAndUnknownKeysAreRefused) {
+  const std::string vessel = "vessel: {position: [0, 0], heading: 0}\n";
+  const std::string path = "path: {waypoints: [[0, 0], [0, 500]]}\n";
+  const auto expect_error = [&](const std::string& content, const std::string& fragment) {
+    const std::string message = ErrorOf(content);
+    EXPECT_NE(message.find(fragment), std::string::npos) << message;
+  };
+  expect_error("path: {waypoints: [[0, 0], [0, 1e12]]}\n" + vessel,
+               "key 'path.waypoints[1][1]' = 1e12 is out of range [-100000, 100000]");
+  expect_error("path: {waypoints: [[0, 0], [0, 1e-12]]}\n" + vessel,
+               "key 'path.waypoints' has waypoints 0 and 1 only 1e-12 m apart (at least 0.1 m)");
+  expect_error("path: {waypoints: [[0, 0], [0, 0.5]]}\n" + vessel,
+               "key 'path.waypoints' is 0.5 m long; a path is 1 to 100000 m");
+  expect_error(path + "vessel: {position: [0, 0], heading: 0, velocity: [1e200, 0, 0]}\n",
+               "key 'vessel.velocity[0]' = 1e200 is out of range [-1, 1]");
+  expect_error(path + "vessel: {position: [0, 0], heading: .nan}\n",
+               "key 'vessel.heading' expects a number, got '.nan'");
+  expect_error(path + vessel +
+                   "dynamic_obstacles:\n  - {position: [1, 1], width: 5, course: 0, "
+                   "speed: 1e6}\n",
+               "key 'dynamic_obstacles[0].speed' = 1e6 is out of range [0, 100]");
+  expect_error(path + vessel + "obstacles: []\n", "unknown key 'obstacles'");
+  expect_error(path + "vessel: {position: [0, 0], heading: 0, speed: 1}\n",
+               "unknown key 'vessel.speed'");
+  expect_error(path + vessel + vessel, "duplicate key 'vessel'");
+  expect_error("name: {a: 1}\n" + path + vessel, "key 'name' expects a text");
+}
+
+// The largest plausible start still simulates to finite states under hard turns at full thrust.
+TEST_F(ScenarioFileTest, FastestPlausibleStartStaysFinite) {
+  const Scenario scenario = LoadScenarioFile(
+      Write("path: {waypoints: [[0, 0], [0, 500], [300, 900]]}\n"
+            "vessel: {position: [0, 0], heading: 0, velocity: [-1, 0.5, -0.5]}\n"));
+  VesselState state;
+  state << 0, 0, 0, scenario.vessel_velocity;
+  for (int step = 0; step < 1000; ++step) {
+    const GeneralisedForce tau = CybershipModel::ForceFromAction(1.0, step % 100 < 50 ? 1.0 : -1.0);
+    state = CybershipModel::Step(state, tau, kTimeStep);
+    ASSERT_TRUE(state.allFinite()) << "step " << step;
   }
 }
 

@@ -43,7 +43,10 @@ TEST(CsvTable, BadRowsNameTheLine) {
             (folder / "short.csv").string() + ":3: 1 fields, the header has 2");
   WriteFile(folder / "text.csv", "a,b\n1,x\n");
   EXPECT_EQ(UserErrorMessage([&] { NumericColumn(ReadCsvTable(folder / "text.csv"), "b"); }),
-            (folder / "text.csv").string() + ":2: column 'b': 'x' is not a number");
+            (folder / "text.csv").string() + ":2: column 'b': 'x' is not a finite number");
+  WriteFile(folder / "nan.csv", "a,b\n1,2\n3,nan\n");
+  EXPECT_EQ(UserErrorMessage([&] { NumericColumn(ReadCsvTable(folder / "nan.csv"), "b"); }),
+            (folder / "nan.csv").string() + ":3: column 'b': 'nan' is not a finite number");
   EXPECT_NE(UserErrorMessage([&] { ReadCsvTable(folder / "none.csv"); }).find("cannot read"),
             std::string::npos);
 }

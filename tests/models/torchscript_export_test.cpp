@@ -6,6 +6,7 @@
 #include <torch/script.h>
 #include <torch/torch.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -185,6 +186,17 @@ TEST(LoadVaeEncoder, ArchitectureMismatchIsAUserErrorNamingTheParameter) {
   script.save(path.string());
   EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(path); }),
               HasSubstr("'convs_0_weight' has shape [1, 1, 45], expected [3, 1, 45]"));
+}
+
+TEST(LoadVaeEncoder, NonFiniteWeightsAreAUserErrorNamingTheParameter) {
+  TemporaryFolder directory;
+  const std::filesystem::path path = directory.path() / "encoder.pt";
+  torch::jit::Module script =
+      ScriptEncoder(*VaeEncoder(VaeEncoderOptions{}), ObservationSettings{});
+  script.attr("fc_mu_weight").toTensor()[0][0] = std::nanf("");
+  script.save(path.string());
+  EXPECT_THAT(UserErrorMessage([&] { LoadVaeEncoder(path); }),
+              HasSubstr("parameter 'fc_mu_weight' holds NaN or infinite values"));
 }
 
 // A TorchScript file that is not an encoder export (here a vae.pt) has no usable attributes or

@@ -76,13 +76,16 @@ int ParseOnly(int argc, char** argv) {
   return count;
 }
 
-TEST(RunProgramTest, BadCommandLineIsOneLineWithCli11sStatus) {
+TEST(RunProgramTest, BadCommandLineIsOneLineWithStatusTwo) {
   const Outcome extra = RunCaptured(ParseOnly, {"prog", "--count", "3", "--bogus"});
-  EXPECT_EQ(extra.status, static_cast<int>(CLI::ExitCodes::ExtrasError));
+  EXPECT_EQ(extra.status, 2);
   EXPECT_THAT(extra.stderr_text, MatchesRegex("prog: error: .*--bogus.*\n"));
   const Outcome missing = RunCaptured(ParseOnly, {"prog"});
-  EXPECT_EQ(missing.status, static_cast<int>(CLI::ExitCodes::RequiredError));
+  EXPECT_EQ(missing.status, 2);
   EXPECT_THAT(missing.stderr_text, MatchesRegex("prog: error: .*--count.*\n"));
+  const Outcome no_value = RunCaptured(ParseOnly, {"prog", "--count"});
+  EXPECT_EQ(no_value.status, 2);
+  EXPECT_THAT(no_value.stderr_text, MatchesRegex("prog: error: .*--count.*\n"));
 }
 
 TEST(RunProgramTest, HelpPrintsUsageAndReturnsZero) {
@@ -130,9 +133,22 @@ TEST(ConfigFlagsTest, FlagsBeatSetsBeatFileBeatsDefaults) {
   EXPECT_DOUBLE_EQ(config.GetDouble("ppo.learning_rate"), 0.25);
 }
 
-TEST(ConfigFlagsTest, LastSwitchWins) {
-  EXPECT_FALSE(Resolve({"prog", "--locked", "--unlocked"}).GetBool("extractor.locked"));
-  EXPECT_TRUE(Resolve({"prog", "--unlocked", "--locked"}).GetBool("extractor.locked"));
+TEST(ConfigFlagsTest, SwitchesSetTheirKey) {
+  EXPECT_FALSE(Resolve({"prog", "--unlocked"}).GetBool("extractor.locked"));
+  EXPECT_TRUE(
+      Resolve({"prog", "--set", "extractor.locked=false", "--locked"}).GetBool("extractor.locked"));
+  EXPECT_TRUE(Resolve({"prog", "--locked", "--locked"}).GetBool("extractor.locked"));
+}
+
+TEST(ConfigFlagsTest, OpposingSwitchesExcludeEachOther) {
+  EXPECT_EQ(UserErrorMessage([] {
+              Resolve({"prog", "--locked", "--unlocked"});
+            }),
+            "--locked and --unlocked exclude each other");
+  EXPECT_EQ(UserErrorMessage([] {
+              Resolve({"prog", "--unlocked", "--locked"});
+            }),
+            "--locked and --unlocked exclude each other");
 }
 
 TEST(ConfigFlagsTest, BadFlagValueNamesTheFlagAndKey) {

@@ -34,5 +34,17 @@ TEST(YamlFileTest, MalformedYamlGivesLineAndColumnFromOne) {
                 ": malformed YAML at line 3, column 1: end of sequence flow not found");
 }
 
+TEST(YamlFileTest, DuplicateKeysAreNamedWithTheirLine) {
+  TemporaryFolder folder;
+  WriteFile(folder / "top.yaml", "a: 1\nb: 2\na: 3\n");
+  EXPECT_EQ(UserErrorMessage([&] { LoadYamlFile(folder / "top.yaml"); }),
+            (folder / "top.yaml").string() + ": line 3: duplicate key 'a'");
+  WriteFile(folder / "nested.yaml", "env:\n  x: 1\nlist:\n  - {r: 1, r: 2}\n");
+  EXPECT_EQ(UserErrorMessage([&] { LoadYamlFile(folder / "nested.yaml"); }),
+            (folder / "nested.yaml").string() + ": line 4: duplicate key 'r'");
+  WriteFile(folder / "same_name_elsewhere.yaml", "a: {x: 1}\nb: {x: 2}\n");
+  EXPECT_NO_THROW(LoadYamlFile(folder / "same_name_elsewhere.yaml"));
+}
+
 }  // namespace
 }  // namespace colav

@@ -9,6 +9,11 @@ namespace {
 
 using Options = DatasetGenerationOptions;
 
+// Scans of each kind at most: a million scans make 3 million rows, 2 GB in memory.
+constexpr std::int64_t kMaxScans = 1'000'000;
+// Steps of a pilot's turn or between recorded scans at most: half an episode (env.max_steps 2000).
+constexpr std::int64_t kMaxSteps = 1'000;
+
 void RequireOrdered(double low, double high, const std::string& low_key,
                     const std::string& high_key) {
   if (low > high) {
@@ -18,6 +23,7 @@ void RequireOrdered(double low, double high, const std::string& low_key,
 }
 
 void RequireConsistent(Options& options) {
+  if (options.synthetic_scans > 0) RequirePlaceableShapes(options.synthetic);
   RequireOrdered(options.mixed_share + options.vessels_share, 1.0,
                  "dataset.mixed_share + dataset.vessels_share", "1");
   const ScriptedPilotOptions& pilot = options.simulator.pilot;
@@ -51,9 +57,9 @@ OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding() {
   OptionsBinding<Options> binding;
   binding
       .Number("dataset.sim_scans", &Options::sim_scans,
-              "scans recorded in the training environment (scripted pilot)", 0)
+              "scans recorded in the training environment (scripted pilot)", 0, kMaxScans)
       .Number("dataset.synthetic_scans", &Options::synthetic_scans,
-              "synthetic scans (three groups)", 0)
+              "synthetic scans (three groups)", 0, kMaxScans)
       .Number("dataset.seed", &Options::seed, "master seed of everything random", 0)
       .Number("dataset.threads", &Options::threads,
               "worker threads (the output does not depend on it)", 1, 256)
@@ -69,21 +75,21 @@ OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding() {
               augmentation(&AugmentationOptions::validation_fraction),
               "share of the non-test source scans held out for validation", 0.0, 1.0)
       .Number("synthetic.radius_mean", synthetic(&Synthetic::radius_mean),
-              "Poisson mean of circle radii (m)", 0.0)
+              "Poisson mean of circle radii (m)", 1.0, 100.0)
       .Number("synthetic.width_mean", synthetic(&Synthetic::width_mean),
-              "Poisson mean of vessel widths (m)", 0.0)
+              "Poisson mean of vessel widths (m)", 1.0, 100.0)
       .Number("synthetic.extent", synthetic(&Synthetic::extent),
-              "obstacle centres uniform in [-extent, extent]^2 (m)", 1.0)
+              "obstacle centres uniform in [-extent, extent]^2 (m)", 10.0, 1000.0)
       .Number("synthetic.safe_zone_radius", synthetic(&Synthetic::safe_zone_radius),
               "obstacle-free disc around the sensor (m)", 0.0, 140.0)
       .Number("pilot.heading_gain", pilot(&Pilot::heading_gain),
               "yaw action per rad of line-of-sight heading error: a1 = clip(k * heading_error - "
               "kd * r + noise)",
-              0.0)
+              0.0, 1000.0)
       .Number("pilot.yaw_rate_gain", pilot(&Pilot::yaw_rate_gain),
-              "yaw action per rad/s of yaw rate (damping, kd)", 0.0)
+              "yaw action per rad/s of yaw rate (damping, kd)", 0.0, 1000.0)
       .Number("pilot.steering_noise_sd", pilot(&Pilot::steering_noise_sd),
-              "Gaussian noise on the yaw action", 0.0)
+              "Gaussian noise on the yaw action", 0.0, 10.0)
       .Number("pilot.thrust_min", pilot(&Pilot::thrust_min), "lowest thrust action level", -1.0,
               1.0)
       .Number("pilot.thrust_max", pilot(&Pilot::thrust_max), "highest thrust action level", -1.0,
@@ -93,15 +99,15 @@ OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding() {
       .Number("pilot.evasive_turn_probability", pilot(&Pilot::evasive_turn_probability),
               "per step: start a full-rudder turn", 0.0, 1.0)
       .Number("pilot.evasive_turn_min_steps", pilot(&Pilot::evasive_turn_min_steps),
-              "shortest evasive turn (steps)", 1)
+              "shortest evasive turn (steps)", 1, kMaxSteps)
       .Number("pilot.evasive_turn_max_steps", pilot(&Pilot::evasive_turn_max_steps),
-              "longest evasive turn (steps)", 1)
+              "longest evasive turn (steps)", 1, kMaxSteps)
       .Number("recording.sample_interval_min", recording(&Recording::sample_interval_min),
-              "fewest steps between two recorded scans", 1)
+              "fewest steps between two recorded scans", 1, kMaxSteps)
       .Number("recording.sample_interval_max", recording(&Recording::sample_interval_max),
-              "most steps between two recorded scans", 1)
+              "most steps between two recorded scans", 1, kMaxSteps)
       .Number("recording.max_scans_per_episode", recording(&Recording::max_scans_per_episode),
-              "scans recorded per episode at most", 1)
+              "scans recorded per episode at most", 1, kMaxSteps)
       .Then(RequireConsistent);
   return binding;
 }

@@ -1,6 +1,9 @@
 #include "train/dataset/file.h"
 
+#include <fmt/format.h>
+
 #include "env/environment_spec.h"
+#include "env/range_finder.h"
 #include "src/error.h"
 #include "src/hdf5_io.h"
 #include "train/dataset/scan_group.h"
@@ -34,6 +37,19 @@ void CheckRange(const Hdf5File& file, const std::string& name,
   }
 }
 
+// Every range is a finite distance the range-finder can measure: a NaN or a negative value (a
+// hand-edited or foreign file) would train a VAE on nonsense without any error.
+void CheckRanges(const Hdf5File& file, const std::vector<float>& ranges) {
+  for (std::size_t k = 0; k < ranges.size(); ++k) {
+    const float range = ranges[k];
+    if (!(range >= 0.0F && range <= static_cast<float>(RangeFinder::kRange))) {
+      throw UserError(fmt::format("{}: dataset 'ranges' row {} ray {} holds {}, expected 0..{:g}",
+                                  file.path().string(), k / kNumRays, k % kNumRays, range,
+                                  RangeFinder::kRange));
+    }
+  }
+}
+
 }  // namespace
 
 void WriteScanDataset(const ScanDataset& dataset, const std::filesystem::path& path) {
@@ -62,6 +78,7 @@ ScanDataset ReadScanDataset(const std::filesystem::path& path) {
   CheckLength(file, "source_scan", dataset.source_scan.size(), ranges.rows);
   CheckLength(file, "shift", dataset.shift.size(), ranges.rows);
   CheckLength(file, "split", dataset.split.size(), ranges.rows);
+  CheckRanges(file, dataset.ranges);
   CheckRange(file, "group", dataset.group, kNumScanGroups - 1);
   CheckRange(file, "shift", dataset.shift, kNumRays - 1);
   CheckRange(file, "split", dataset.split, static_cast<std::int64_t>(DatasetSplit::kTest));

@@ -34,8 +34,8 @@ struct ScanDataset {
 void WriteScanDataset(const ScanDataset& dataset, const std::filesystem::path& path);
 
 /// Reads and checks a dataset file: a missing file, dataset or attribute, a wrong shape, a
-/// truncated file or an out-of-range group or split value is a one-line UserError naming the file
-/// and the dataset.
+/// truncated file, an out-of-range group or split value or a range that is not in [0, 150] m (NaN,
+/// negative) is a one-line UserError naming the file and the dataset.
 ScanDataset ReadScanDataset(const std::filesystem::path& path);
 
 }  // namespace colav

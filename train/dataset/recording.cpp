@@ -5,6 +5,7 @@
 
 #include "env/environment.h"
 #include "env/training_scenario.h"
+#include "src/error.h"
 #include "src/random.h"
 #include "src/threads/thread_pool.h"
 
@@ -67,6 +68,13 @@ std::vector<RangeScan> RecordSimulatorScans(std::int64_t count, std::uint64_t se
         },
         poll);
     next_episode += static_cast<std::uint64_t>(round_size);
+    // Sample intervals longer than the episodes would record nothing, round after round.
+    if (std::all_of(round.begin(), round.end(), [](const auto& s) { return s.empty(); })) {
+      throw UserError("recording: " + std::to_string(round_size) +
+                      " episodes recorded no scan (recording.sample_interval_min " +
+                      std::to_string(options.sample_interval_min) +
+                      " steps is longer than the episodes)");
+    }
     for (const std::vector<RangeScan>& episode_scans : round) {
       for (const RangeScan& scan : episode_scans) {
         if (static_cast<std::int64_t>(scans.size()) < count) scans.push_back(scan);

@@ -27,9 +27,14 @@ struct SyntheticScene {
 };
 
 /// Draws circles first, then vessels, each by rejection until it clears the safe zone and every
-/// obstacle placed before it. A size of 0 (a Poisson draw of zero) is redrawn: it has no shape.
+/// obstacle placed before it. A size of 0 (a Poisson draw of zero) is redrawn: it has no shape. A
+/// shape not placed after 100,000 draws is a UserError naming the synthetic.* settings.
 SyntheticScene SampleSyntheticScene(Rng& rng, SyntheticObstacleCounts counts,
                                     const SyntheticSceneOptions& options);
+
+/// Samples a few scenes of every synthetic group (a fixed seed, nothing recorded), so that
+/// settings leaving no room for the shapes fail before any work, as SampleSyntheticScene would.
+void RequirePlaceableShapes(const SyntheticSceneOptions& options);
 
 /// The ranges (m, 150 = no return) of the scene seen from the origin.
 std::array<float, kNumRays> ScanSyntheticScene(const SyntheticScene& scene);

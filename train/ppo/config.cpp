@@ -12,6 +12,16 @@
 namespace colav {
 namespace {
 
+// Network sizes far beyond the paper's (hidden [128, 64, 32], one 1-channel conv) that still fit in
+// memory; larger ones are typos.
+constexpr std::int64_t kMaxLayerSize = 4096;
+constexpr std::size_t kMaxLayers = 16;
+constexpr std::int64_t kMaxConvChannels = 1024;
+// Samples of one rollout (n_envs * n_steps) at most: 186 floats each, about 800 MB.
+constexpr std::int64_t kMaxRolloutSamples = 1 << 20;
+// Environment steps of a run at most: a thousand times the paper's 3 million.
+constexpr std::int64_t kMaxSteps = 3'000'000'000;
+
 std::vector<std::int64_t> ParseLayerSizes(const std::string& text) {
   constexpr const char* kKey = "policy.hidden_sizes";
   std::vector<std::int64_t> sizes;
@@ -25,12 +35,15 @@ std::vector<std::int64_t> ParseLayerSizes(const std::string& text) {
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used == 0 || used != item.size() || size < 1) {
+    if (used == 0 || used != item.size() || size < 1 || size > kMaxLayerSize) {
       throw UserError(fmt::format("{}: bad layer size '{}' in '{}'", kKey, item, text));
     }
     sizes.push_back(size);
   }
   if (sizes.empty()) throw UserError(fmt::format("{}: no layer size in '{}'", kKey, text));
+  if (sizes.size() > kMaxLayers) {
+    throw UserError(fmt::format("{}: more than {} layers in '{}'", kKey, kMaxLayers, text));
+  }
   return sizes;
 }
 
@@ -38,12 +51,52 @@ std::string LayerSizesText(const std::vector<std::int64_t>& sizes) {
   return fmt::format("{}", fmt::join(sizes, ","));
 }
 
-// A VAE extractor without an encoder file would train from random weights.
+// ParseConvStack's errors named with the key, and channel counts bounded like the layer sizes.
+std::vector<ConvLayerSpec> ParseBaselineConvs(const std::string& text) {
+  constexpr const char* kKey = "extractor.baseline_convs";
+  std::vector<ConvLayerSpec> layers;
+  try {
+    layers = ParseConvStack(text);
+  } catch (const UserError& error) {
+    throw UserError(std::string(kKey) + ": " + error.what());
+  }
+  for (const ConvLayerSpec& layer : layers) {
+    if (layer.out_channels > kMaxConvChannels) {
+      throw UserError(fmt::format("{}: {} output channels in '{}' (at most {})", kKey,
+                                  layer.out_channels, text, kMaxConvChannels));
+    }
+  }
+  return layers;
+}
+
+// A VAE extractor without an encoder file would train from random weights; the baseline would
+// ignore one.
 void RequireEncoder(PpoRunOptions& options) {
   const FeatureExtractorOptions& extractor = options.model.extractor;
-  if (extractor.kind != ExtractorKind::kBaseline && extractor.encoder.empty()) {
+  const bool baseline = extractor.kind == ExtractorKind::kBaseline;
+  if (!baseline && extractor.encoder.empty()) {
     throw UserError(ExtractorKindName(extractor.kind) +
                     " needs a pre-trained encoder (--encoder ENCODER.pt)");
+  }
+  if (baseline && !extractor.encoder.empty()) {
+    throw UserError("extractor.encoder " + extractor.encoder.string() +
+                    ": the baseline extractor has no pre-trained encoder (use vae-shallow or "
+                    "vae-deep)");
+  }
+}
+
+// A minibatch is cut from one rollout; a rollout must fit in memory.
+void RequireRolloutSizes(PpoRunOptions& options) {
+  const PpoOptions& ppo = options.ppo;
+  const std::int64_t samples = static_cast<std::int64_t>(ppo.n_envs) * ppo.n_steps;
+  if (samples > kMaxRolloutSamples) {
+    throw UserError(fmt::format("ppo.n_envs * ppo.n_steps = {} samples per rollout (at most {})",
+                                samples, kMaxRolloutSamples));
+  }
+  if (ppo.batch_size > samples) {
+    throw UserError(fmt::format(
+        "ppo.batch_size = {} exceeds the {} samples of a rollout (ppo.n_envs * ppo.n_steps)",
+        ppo.batch_size, samples));
   }
 }
 
@@ -61,18 +114,20 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "ppo.total_steps", [](Run & o) -> auto& { return o.ppo.total_steps; },
           "environment steps to train for (all worlds); SB3 keeps collecting while steps < "
           "total: 367 rollouts, 3,006,464 steps",
-          1)
+          1, kMaxSteps)
       .Number(
           "ppo.n_envs", [](Run & o) -> auto& { return o.ppo.n_envs; }, "worlds stepped together", 1,
           1024)
       .Number(
           "ppo.n_steps", [](Run & o) -> auto& { return o.ppo.n_steps; },
-          "steps per world and rollout (8 worlds: 8,192 samples per rollout)", 1)
+          "steps per world and rollout (8 worlds: 8,192 samples per rollout)", 1,
+          kMaxRolloutSamples)
       .Number(
-          "ppo.batch_size", [](Run & o) -> auto& { return o.ppo.batch_size; }, "minibatch size", 1)
+          "ppo.batch_size", [](Run & o) -> auto& { return o.ppo.batch_size; },
+          "minibatch size (at most one rollout)", 1, kMaxRolloutSamples)
       .Number(
           "ppo.n_epochs", [](Run & o) -> auto& { return o.ppo.n_epochs; },
-          "passes over each rollout", 1)
+          "passes over each rollout", 1, 1000)
       .Number(
           "ppo.gamma", [](Run & o) -> auto& { return o.ppo.gamma; }, "discount factor", 0.0, 1.0)
       .Number(
@@ -80,25 +135,25 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           1.0)
       .Number(
           "ppo.clip_range", [](Run & o) -> auto& { return o.ppo.loss.clip_range; },
-          "PPO clip range", 0.0)
+          "PPO clip range", 0.0, 10.0)
       .Number(
           "ppo.ent_coef", [](Run & o) -> auto& { return o.ppo.loss.ent_coef; },
-          "entropy bonus coefficient")
+          "entropy bonus coefficient", -10.0, 10.0)
       .Number(
           "ppo.vf_coef", [](Run & o) -> auto& { return o.ppo.loss.vf_coef; },
-          "value loss coefficient", 0.0)
+          "value loss coefficient", 0.0, 100.0)
       .Bool(
           "ppo.timeouts_terminal", [](Run & o) -> auto& { return o.ppo.timeouts_terminal; },
           "end a timed-out episode's return like a terminal state (the reference) instead of "
           "bootstrapping it with V(final observation) (SB3)")
       .Number(
           "ppo.max_grad_norm", [](Run & o) -> auto& { return o.ppo.max_grad_norm; },
-          "global gradient-norm clip", 0.0)
+          "global gradient-norm clip", 0.0, 1e6)
       .Number(
           "ppo.learning_rate", [](Run & o) -> auto& { return o.ppo.adam.learning_rate; },
-          "Adam learning rate", 0.0)
+          "Adam learning rate", 0.0, 1.0)
       .Number(
-          "ppo.adam_eps", [](Run & o) -> auto& { return o.ppo.adam.eps; }, "Adam epsilon", 0.0)
+          "ppo.adam_eps", [](Run & o) -> auto& { return o.ppo.adam.eps; }, "Adam epsilon", 0.0, 1.0)
       .Bool(
           "ppo.normalize_advantage",
           [](Run & o) -> auto& { return o.ppo.loss.normalize_advantage; },
@@ -109,7 +164,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           TextCodec<std::vector<std::int64_t>>{LayerSizesText, ParseLayerSizes})
       .Number(
           "policy.log_std_init", [](Run & o) -> auto& { return o.model.log_std_init; },
-          "initial log std of the action distribution")
+          "initial log std of the action distribution (std e^-10 to e^2)", -10.0, 2.0)
       .Coded("extractor.name", [](Run & o) -> auto& { return o.model.extractor.kind; },
              "perception feature extractor",
              TextCodec<ExtractorKind>{ExtractorKindName, ParseExtractorKind},
@@ -130,26 +185,27 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "train although the encoder records another closeness transform than env.closeness")
       .Number(
           "extractor.latent_dims", [](Run & o) -> auto& { return o.model.extractor.latent_dims; },
-          "latent size the encoder must have", 1)
+          "latent size the encoder must have", 1, 4096)
       .Coded(
           "extractor.baseline_convs",
           [](Run & o) -> auto& { return o.model.extractor.baseline_convs; },
           "baseline conv stack, out:kernel:stride:padding per circular conv layer",
-          TextCodec<std::vector<ConvLayerSpec>>{ConvStackText, ParseConvStack})
+          TextCodec<std::vector<ConvLayerSpec>>{ConvStackText, ParseBaselineConvs})
       .Number(
           "train.seed", [](Run & o) -> auto& { return o.ppo.seed; },
           "master seed (initialisation, sampling, worlds)", 0)
       .Number(
           "train.checkpoint_interval", [](Run & o) -> auto& { return o.ppo.checkpoint_interval; },
-          "steps between checkpoints", 1)
+          "steps between checkpoints", 1, kMaxSteps)
       .Bool(
           "train.keep_checkpoints", [](Run & o) -> auto& { return o.ppo.keep_checkpoints; },
           "keep every checkpoint's policy in checkpoints/")
       .Number(
           "train.env_threads", [](Run & o) -> auto& { return o.ppo.env_threads; },
-          "threads stepping the worlds (0: one per core)", 0)
+          "threads stepping the worlds (0: one per core)", 0, 256)
       .Include(EnvironmentBinding(), &Run::env)
       .Then(RequireEncoder)
+      .Then(RequireRolloutSizes)
       .Then(DeriveModelSeed);
   return binding;
 }

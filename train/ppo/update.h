@@ -13,16 +13,11 @@
 
 #include "models/actor_critic_fast.h"
 #include "models/adam.h"
+#include "src/training_diverged.h"
 #include "train/ppo/config.h"
 #include "train/ppo/rollout_buffer.h"
 
 namespace colav {
-
-/// A loss or a parameter became NaN or infinite: training cannot go on.
-class TrainingDiverged : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 /// What SB3 logs after an update (its train/* names).
 struct UpdateStats {

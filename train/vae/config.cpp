@@ -18,6 +18,9 @@ std::string DecoderPaddingName(DecoderPadding padding) {
   return padding == DecoderPadding::kZero ? "zero" : "circular";
 }
 
+// Scans per batch at most (720 bytes each, and a model's activations many times that).
+constexpr std::int64_t kMaxBatch = 1 << 20;
+
 void RequireDataPath(VaeTrainingOptions& options) {
   if (options.data_path.empty()) throw UserError("data.path: no dataset given (use --data)");
 }
@@ -32,7 +35,7 @@ OptionsBinding<VaeTrainingOptions> VaeTrainingBinding() {
              "range -> closeness: linear 1 - d/150 (paper) or log (the reference environment's)",
              ClosenessTransformCodec(), {"linear", "log"})
       .Number("data.train_noise_variance", &Options::train_noise_variance,
-              "variance of the Gaussian noise added to the training split (paper: 0.007)", 0.0)
+              "variance of the Gaussian noise added to the training split (paper: 0.007)", 0.0, 1.0)
       .Bool("data.clip_noisy_scans", &Options::clip_noisy_scans,
             "clip the noisy training scans to [0, 1] (the reference does not; unclipped, BCE is "
             "unbounded below and DeepConvVAE exploits it)")
@@ -43,16 +46,16 @@ OptionsBinding<VaeTrainingOptions> VaeTrainingBinding() {
       .Number(
           "vae.latent_dims", [](Options & o) -> auto& { return o.model.latent_dims; },
           "latent dimensions", 1, 4096)
-      .Number("vae.beta", &Options::beta, "weight of the KL term", 0.0)
+      .Number("vae.beta", &Options::beta, "weight of the KL term", 0.0, 1000.0)
       .Coded("vae.decoder_padding", [](Options & o) -> auto& { return o.model.decoder_padding; },
              "decoder transposed convolutions: circular (CPTC-1D) or zero padding (for the "
              "comparison figure)",
              TextCodec<DecoderPadding>{DecoderPaddingName, ParseDecoderPadding},
              {"circular", "zero"})
-      .Number("training.epochs", &Options::epochs, "epochs per seed", 1)
-      .Number("training.batch_size", &Options::batch_size, "minibatch size", 1)
+      .Number("training.epochs", &Options::epochs, "epochs per seed", 1, 100000)
+      .Number("training.batch_size", &Options::batch_size, "minibatch size", 1, kMaxBatch)
       .Number("training.learning_rate", &Options::learning_rate,
-              "Adam learning rate (otherwise Adam's default settings)", 0.0)
+              "Adam learning rate (otherwise Adam's default settings)", 0.0, 1.0)
       .Number("training.seeds", &Options::seeds,
               "independent training runs (seed_0 ... seed_<n-1>; the paper's table uses 10)", 1,
               1000)
@@ -61,7 +64,7 @@ OptionsBinding<VaeTrainingOptions> VaeTrainingBinding() {
       .Number("training.threads", &Options::threads,
               "LibTorch threads (1 is fastest for these small models on 2 cores)", 1, 256)
       .Number("evaluation.batch_size", &Options::evaluation_batch_size,
-              "scans per batch when evaluating", 1)
+              "scans per batch when evaluating", 1, kMaxBatch)
       .Bool("figures.enabled", &Options::figures,
             "draw reconstructions and training curves into RUN_DIR")
       .Then(RequireDataPath);

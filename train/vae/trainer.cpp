@@ -3,11 +3,14 @@
 #include <ATen/CPUGeneratorImpl.h>
 
 #include <chrono>
+#include <cmath>
+#include <string>
 #include <utility>
 
 #include "models/circular_conv.h"
 #include "models/vae_loss.h"
 #include "src/seeding.h"
+#include "src/training_diverged.h"
 #include "train/vae/evaluation.h"
 
 namespace colav {
@@ -15,6 +18,23 @@ namespace {
 
 torch::Generator SeededGenerator(std::uint64_t seed, const char* stream, std::uint64_t index) {
   return at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(seed, stream, index));
+}
+
+// TrainingDiverged when a loss of `epoch`, or a parameter after it, is NaN or infinite.
+void RequireFinite(double value, const char* what, std::int64_t epoch) {
+  if (!std::isfinite(value)) {
+    throw TrainingDiverged(std::string(what) + " is " + std::to_string(value) + " in epoch " +
+                           std::to_string(epoch) + " (learning rate too high, or bad data?)");
+  }
+}
+
+void RequireFiniteParameters(ConvVae& model, std::int64_t epoch) {
+  for (const auto& parameter : model->named_parameters()) {
+    if (!torch::isfinite(parameter.value()).all().item<bool>()) {
+      throw TrainingDiverged("parameter " + parameter.key() + " is not finite after epoch " +
+                             std::to_string(epoch) + " (learning rate too high?)");
+    }
+  }
 }
 
 }  // namespace
@@ -64,18 +84,26 @@ EpochLosses VaeTrainer::RunEpoch(std::int64_t epoch,
     loss.total.backward();
     optimizer_.Step();
     // Read the scalars directly: item() would dispatch an operator per call.
-    bce_sum += static_cast<double>(*loss.bce.data_ptr<float>()) * static_cast<double>(size);
-    kl_sum += static_cast<double>(*loss.kl.data_ptr<float>()) * static_cast<double>(size);
+    const auto bce = static_cast<double>(*loss.bce.data_ptr<float>());
+    const auto kl = static_cast<double>(*loss.kl.data_ptr<float>());
+    // Checked after the step, so the step's NaN never reaches a checkpoint: the epoch is lost.
+    RequireFinite(bce, "the training BCE", epoch);
+    RequireFinite(kl, "the training KL", epoch);
+    bce_sum += bce * static_cast<double>(size);
+    kl_sum += kl * static_cast<double>(size);
     if (on_batch) {
       on_batch(begin + size,
                (bce_sum + options_.beta * kl_sum) / static_cast<double>(begin + size));
     }
   }
 
+  RequireFiniteParameters(model_, epoch);
   const VaeEvaluation validation =
       EvaluateVae(model_, data_.validation, options_.beta,
                   DeriveSeed(seed_, "vae.validation", static_cast<std::uint64_t>(epoch)),
                   options_.evaluation_batch_size);
+  RequireFinite(validation.bce, "the validation BCE", epoch);
+  RequireFinite(validation.kl, "the validation KL", epoch);
   EpochLosses losses;
   losses.epoch = epoch;
   losses.train_bce = bce_sum / static_cast<double>(count);

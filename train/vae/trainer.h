@@ -43,7 +43,8 @@ class VaeTrainer {
   VaeTrainer(const VaeTrainingOptions& options, const VaeData& data, std::uint64_t seed);
 
   /// Trains epoch `epoch` (1-based) and validates. on_batch(scans done in this epoch, mean loss so
-  /// far) is called after every minibatch.
+  /// far) is called after every minibatch. A NaN or infinite loss or parameter throws
+  /// TrainingDiverged (src/training_diverged.h) before the epoch's results can be saved.
   EpochLosses RunEpoch(std::int64_t epoch,
                        const std::function<void(std::int64_t, double)>& on_batch = {});
 

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "env/angles.h"
+#include "src/error.h"
 #include "src/random.h"
 #include "train/dataset/shape_overlap.h"
 
@@ -98,6 +100,28 @@ TEST(SyntheticScanTest, ScenesRespectCountsSafeZoneAndSeparation) {
       }
     }
   }
+}
+
+// Settings that leave no room for a shape give up with the settings named instead of looping
+// forever (a safe zone covering the whole area, circles larger than it).
+TEST(SyntheticScanTest, NoRoomForAShapeIsAUserErrorNotAHang) {
+  SyntheticSceneOptions covered;
+  covered.safe_zone_radius = 140.0;
+  covered.extent = 10.0;
+  Rng rng = MakeRng(1, "test");
+  try {
+    SampleSyntheticScene(rng, {3, 2}, covered);
+    FAIL() << "expected a UserError";
+  } catch (const UserError& error) {
+    EXPECT_NE(std::string(error.what()).find("no room for circle 1 of 3"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("synthetic.safe_zone_radius 140"), std::string::npos);
+  }
+  SyntheticSceneOptions huge_vessels;
+  huge_vessels.width_mean = 100.0;
+  huge_vessels.extent = 10.0;
+  EXPECT_THROW(RequirePlaceableShapes(huge_vessels), UserError);
+  EXPECT_NO_THROW(RequirePlaceableShapes(SyntheticSceneOptions()));
 }
 
 }  // namespace

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "models/torchscript_export.h"
 #include "src/seeding.h"
+#include "src/training_diverged.h"
 #include "tests/src/test_util.h"
 #include "train/dataset/generation.h"
 #include "train/vae/checkpoint.h"
@@ -146,6 +149,23 @@ TEST(VaeTrainerTest, SameSeedSameModel) {
   VaeTrainer a(options, data, 3);
   VaeTrainer b(options, data, 3);
   EXPECT_DOUBLE_EQ(a.RunEpoch(1).train_bce, b.RunEpoch(1).train_bce);
+}
+
+// A NaN reaching the loss stops the epoch before its results could be saved (the guard of
+// train_vae, which then exits with kDivergedStatus and keeps the last checkpoint).
+TEST(VaeTrainerTest, NonFiniteLossThrowsTrainingDiverged) {
+  const TemporaryFolder folder;
+  const VaeTrainingOptions options = TinyOptions(WriteTinyDataset(folder), 1);
+  VaeData data = LoadVaeData(options.data_path, options.transform);
+  data.train[3][7] = std::numeric_limits<float>::quiet_NaN();  // past LoadVaeData's checks
+  VaeTrainer trainer(options, data, 3);
+  try {
+    trainer.RunEpoch(1);
+    FAIL() << "expected TrainingDiverged";
+  } catch (const TrainingDiverged& diverged) {
+    EXPECT_NE(std::string(diverged.what()).find("in epoch 1"), std::string::npos)
+        << diverged.what();
+  }
 }
 
 }  // namespace

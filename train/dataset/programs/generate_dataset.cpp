@@ -8,6 +8,7 @@
 #include <string>
 
 #include "src/cli.h"
+#include "src/output_path.h"
 #include "src/progress.h"
 #include "train/dataset/config.h"
 #include "train/dataset/file.h"
@@ -50,6 +51,7 @@ int GenerateDataset(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
   const DatasetGenerationOptions options = binding.Read(config);
+  RequireWritableFile(out_path, "--out");
 
   const auto start = std::chrono::steady_clock::now();
   ProgressBar progress("scans", options.sim_scans + options.synthetic_scans, "scans");

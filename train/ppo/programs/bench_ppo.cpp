@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "src/cli.h"
+#include "src/number_flag.h"
 #include "train/ppo/config.h"
 #include "train/ppo/update.h"
 
@@ -54,10 +55,10 @@ colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options) {
 int Main(int argc, char** argv) {
   CLI::App app{"Times the PPO learner (update and policy forward) on synthetic rollouts."};
   int rollouts = 2;
-  app.add_option("--rollouts", rollouts, "updates timed per configuration")
-      ->check(CLI::PositiveNumber);
+  colav::AddNumberFlag(app, "--rollouts", rollouts, "updates timed per configuration", 1, 1000);
   const colav::ConfigFlags config_flags(app, colav::ConfigSchema());  // no keys; --print-config
   colav::ParseCommandLine(app, argc, argv);
+  config_flags.Resolve();  // no keys: rejects any in --set or --config
   torch::set_num_threads(1);
 
   const colav::PpoOptions options;

@@ -15,15 +15,13 @@
 #include "src/error.h"
 #include "src/logging.h"
 #include "src/run_folder.h"
+#include "src/training_diverged.h"
 #include "train/ppo/config.h"
 #include "train/ppo/encoder_check.h"
 #include "train/ppo/trainer.h"
 #include "train/ppo/update.h"
 
 namespace {
-
-// Exit status of a run stopped by a NaN or Inf.
-constexpr int kDivergedStatus = 3;
 
 // A resumed run reads its configuration from RUN_DIR/config.yaml unless --config says otherwise:
 // inserts "--config RUN_DIR/config.yaml" after the program name.
@@ -114,7 +112,7 @@ int Main(int argc, char** argv) {
   } catch (const colav::TrainingDiverged& diverged) {
     spdlog::error("training diverged: {}; the last good checkpoint is kept in {}", diverged.what(),
                   run_path);
-    return kDivergedStatus;
+    return colav::kDivergedStatus;
   }
   return 0;
 }

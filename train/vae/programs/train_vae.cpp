@@ -13,6 +13,7 @@
 #include "src/logging.h"
 #include "src/run_folder.h"
 #include "src/statistics.h"
+#include "src/training_diverged.h"
 #include "train/vae/config.h"
 #include "train/vae/data.h"
 #include "train/vae/figures.h"
@@ -50,7 +51,8 @@ int TrainVae(int argc, char** argv) {
       "error, active latent dims); rerunning the same command resumes. RUN_DIR/summary.json and\n"
       "summary.md give the test error's mean, sd and Student-t 95 % CI over seeds; figures:\n"
       "training_curves.png, reconstructions.png. The multi-model figures of the paper (zero\n"
-      "padding vs CPTC, latent densities) come from the program vae_figures."};
+      "padding vs CPTC, latent densities) come from the program vae_figures. A NaN or infinite\n"
+      "loss or weight stops the run with exit status 3, keeping the last good checkpoint."};
   std::string run_dir;
   app.add_option("--out", run_dir, "run folder (created; reused to resume)")->required();
   const OptionsBinding<VaeTrainingOptions> binding = VaeTrainingBinding();
@@ -70,6 +72,8 @@ int TrainVae(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
   const VaeTrainingOptions options = binding.Read(config);
+  // The data is checked (every range finite, in [0, 150] m) before the run folder is touched.
+  const VaeData data = LoadVaeData(options.data_path, options.transform);
 
   const RunFolder folder = RunFolder::Create(run_dir);
   InitLogging("train_vae", folder.LogPath(), false);
@@ -77,13 +81,19 @@ int TrainVae(int argc, char** argv) {
   torch::set_num_threads(options.threads);
   const StopFlag stop_flag;
 
-  const VaeData data = LoadVaeData(options.data_path, options.transform);
   spdlog::info("{}: train {}, validation {}, test {} scans; {}", options.data_path,
                data.train.size(0), data.validation.size(0), data.test.size(0),
                DescribeVae(options));
   std::vector<SeedResult> results;
   for (std::int64_t k = 0; k < options.seeds; ++k) {
-    results.push_back(RunVaeSeed(data, options, k, folder.path() / ("seed_" + std::to_string(k))));
+    const std::filesystem::path seed_dir = folder.path() / ("seed_" + std::to_string(k));
+    try {
+      results.push_back(RunVaeSeed(data, options, k, seed_dir));
+    } catch (const TrainingDiverged& diverged) {
+      spdlog::error("seed {} diverged: {}; the last good checkpoint is kept in {}", k,
+                    diverged.what(), seed_dir.string());
+      return kDivergedStatus;
+    }
     const SeedResult& r = results.back();
     spdlog::info(
         "seed {}: test error {:.3f} (BCE {:.3f} + beta KL {:.3f}), {} active dims, {:.1f} s", k,

@@ -11,7 +11,9 @@
 #include <vector>
 
 #include "src/cli.h"
+#include "src/output_path.h"
 #include "src/seeding.h"
+#include "src/training_diverged.h"
 #include "train/vae/config.h"
 #include "train/vae/data.h"
 #include "train/vae/figures.h"
@@ -98,12 +100,18 @@ int VaeFigures(int argc, char** argv) {
   config_flags.AddFlag("--threads", "training.threads");
   ParseCommandLine(app, argc, argv);
   const VaeTrainingOptions options = binding.Read(config_flags.Resolve());
+  RequireWritableFolder(out_dir, "--out");
   torch::set_num_threads(options.threads);
 
   const VaeData data = LoadVaeData(options.data_path, options.transform);
-  for (const std::string& figure : figures) {
-    if (figure == "padding") DrawPaddingComparison(options, data, out_dir);
-    if (figure == "kde") DrawLatentDensities(options, data, out_dir);
+  try {
+    for (const std::string& figure : figures) {
+      if (figure == "padding") DrawPaddingComparison(options, data, out_dir);
+      if (figure == "kde") DrawLatentDensities(options, data, out_dir);
+    }
+  } catch (const TrainingDiverged& diverged) {
+    spdlog::error("training diverged: {}", diverged.what());
+    return kDivergedStatus;
   }
   return 0;
 }
