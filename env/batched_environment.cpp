@@ -1,16 +1,56 @@
 #include "env/batched_environment.h"
 
 #include <algorithm>
+#include <atomic>
+#include <thread>
 
 #include "env/environment.h"
+#include "env/scenario_file.h"
 #include "env/training_scenario.h"
 #include "src/seeding.h"
 #include "src/threads/thread_pool.h"
 
 namespace colav {
 
+struct BatchedEnvironment::NextEpisode {
+  enum State : int { kEmpty, kQueued, kBuilding, kReady };
+  std::unique_ptr<Environment> environment;
+  std::vector<float> observation = std::vector<float>(kObservationSize);
+  std::uint64_t seed = 0;  ///< of the episode it holds or is to hold
+  std::atomic<int> state{kEmpty};
+};
+
+namespace {
+
+std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(int num_envs) {
+  return std::vector<std::shared_ptr<const ScenarioSource>>(
+      num_envs, std::make_shared<TrainingScenarioGenerator>());
+}
+
+std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
+    const std::vector<Scenario>& scenarios) {
+  std::vector<std::shared_ptr<const ScenarioSource>> sources;
+  sources.reserve(scenarios.size());
+  for (const Scenario& scenario : scenarios) {
+    sources.push_back(std::make_shared<FixedScenarioSource>(scenario));
+  }
+  return sources;
+}
+
+}  // namespace
+
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_envs,
                                        int num_threads, std::uint64_t seed)
+    : BatchedEnvironment(config, num_envs, num_threads, seed, SharedTrainingSource(num_envs)) {}
+
+BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
+                                       const std::vector<Scenario>& scenarios, int num_threads)
+    : BatchedEnvironment(config, static_cast<int>(scenarios.size()), num_threads, 0,
+                         FixedSources(scenarios)) {}
+
+BatchedEnvironment::BatchedEnvironment(
+    const EnvironmentConfig& config, int num_envs, int num_threads, std::uint64_t seed,
+    const std::vector<std::shared_ptr<const ScenarioSource>>& sources)
     : num_envs_(num_envs),
       seed_(seed),
       episode_counts_(num_envs, 0),
@@ -21,9 +61,10 @@ BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_
       terminated_(num_envs, 0),
       truncated_(num_envs, 0),
       finished_episodes_(num_envs) {
-  const auto source = std::make_shared<TrainingScenarioGenerator>();
-  for (int i = 0; i < num_envs; ++i) {
+  for (const auto& source : sources) {
     worlds_.push_back(std::make_unique<Environment>(config, source));
+    next_episodes_.push_back(std::make_unique<NextEpisode>());
+    next_episodes_.back()->environment = std::make_unique<Environment>(config, source);
   }
 }
 
@@ -33,35 +74,120 @@ std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t e
   return DeriveSeed(seed, "episode", (static_cast<std::uint64_t>(world) << 32U) + episode);
 }
 
-void BatchedEnvironment::Reset() {
-  pool_->ParallelFor(num_envs_, [this](int i) {
-    worlds_[i]->Reset(TrainingEpisodeSeed(seed_, i, episode_counts_[i]),
-                      &observations_[static_cast<std::size_t>(i) * kObservationSize]);
-    terminated_[i] = truncated_[i] = 0;
-    rewards_[i] = 0.0f;
+std::uint64_t TestScenarioSeed(std::uint64_t master_seed, std::uint64_t k) {
+  return DeriveSeed(master_seed, "test-scenario", k);
+}
+
+BatchedOutputs BatchedEnvironment::OwnOutputs() {
+  return {observations_.data(), final_observations_.data(), rewards_.data(), terminated_.data(),
+          truncated_.data()};
+}
+
+void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed) { Reset(seed, OwnOutputs()); }
+
+void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed, const BatchedOutputs& outputs) {
+  if (seed) {
+    seed_ = *seed;
+    std::fill(episode_counts_.begin(), episode_counts_.end(), 0);
+  } else if (started_) {
+    for (std::uint64_t& count : episode_counts_) ++count;
+  }
+  started_ = true;
+  pool_->ParallelFor(num_envs_, [this, &outputs](int i) {
+    StartEpisode(i, &outputs.observations[static_cast<std::size_t>(i) * kObservationSize]);
+    outputs.terminated[i] = outputs.truncated[i] = 0;
+    outputs.rewards[i] = 0.0f;
     finished_episodes_[i].reset();
   });
 }
 
-void BatchedEnvironment::Step(const float* actions) {
-  pool_->ParallelFor(num_envs_,
-                     [this, actions](int i) { StepWorld(i, actions + i * kActionSize); });
+void BatchedEnvironment::Step(const float* actions) { StepAll(actions, OwnOutputs()); }
+
+void BatchedEnvironment::Step(const float* actions, const BatchedOutputs& outputs) {
+  StepAll(actions, outputs);
 }
 
-void BatchedEnvironment::StepWorld(int i, const float* action) {
-  float* observation = &observations_[static_cast<std::size_t>(i) * kObservationSize];
+void BatchedEnvironment::Step(const double* actions, const BatchedOutputs& outputs) {
+  StepAll(actions, outputs);
+}
+
+template <typename Action>
+void BatchedEnvironment::StepAll(const Action* actions, const BatchedOutputs& outputs) {
+  pool_->ParallelFor(num_envs_, [this, actions, &outputs](int i) {
+    StepWorld(i, actions + static_cast<std::ptrdiff_t>(i) * kActionSize, outputs);
+  });
+}
+
+template <typename Action>
+void BatchedEnvironment::StepWorld(int world, const Action* action, const BatchedOutputs& outputs) {
+  const std::size_t row = static_cast<std::size_t>(world) * kObservationSize;
+  float* observation = &outputs.observations[row];
   const double clipped[kActionSize] = {std::clamp<double>(action[0], -1.0, 1.0),
                                        std::clamp<double>(action[1], -1.0, 1.0)};
-  const StepResult result = worlds_[i]->Step(clipped, observation);
-  rewards_[i] = static_cast<float>(result.reward);
-  terminated_[i] = result.terminated;
-  truncated_[i] = result.truncated;
-  finished_episodes_[i] = result.episode;
+  const StepResult result = worlds_[world]->Step(clipped, observation);
+  outputs.rewards[world] = static_cast<float>(result.reward);
+  outputs.terminated[world] = result.terminated;
+  outputs.truncated[world] = result.truncated;
+  finished_episodes_[world] = result.episode;
   if (result.terminated || result.truncated) {
-    std::copy(observation, observation + kObservationSize,
-              &final_observations_[static_cast<std::size_t>(i) * kObservationSize]);
-    ++episode_counts_[i];
-    worlds_[i]->Reset(TrainingEpisodeSeed(seed_, i, episode_counts_[i]), observation);
+    std::copy(observation, observation + kObservationSize, &outputs.final_observations[row]);
+    ++episode_counts_[world];
+    StartEpisode(world, observation);
+  }
+}
+
+std::uint64_t BatchedEnvironment::EpisodeSeed(int world, std::uint64_t episode) const {
+  return TrainingEpisodeSeed(seed_, world, episode);
+}
+
+void BatchedEnvironment::StartEpisode(int world, float* observation) {
+  if (!TakeNextEpisode(world, observation)) {
+    worlds_[world]->Reset(EpisodeSeed(world, episode_counts_[world]), observation);
+  }
+  PrepareNextEpisode(world);
+}
+
+bool BatchedEnvironment::TakeNextEpisode(int world, float* observation) {
+  NextEpisode& next = *next_episodes_[world];
+  int state = next.state.load(std::memory_order_acquire);
+  if (state == NextEpisode::kQueued &&
+      next.state.compare_exchange_strong(state, NextEpisode::kEmpty, std::memory_order_acquire)) {
+    return false;  // not started yet: cancelled, its task will find nothing to do
+  }
+  while (state == NextEpisode::kBuilding) {  // a worker is at it: it ends sooner than a reset
+    std::this_thread::yield();
+    state = next.state.load(std::memory_order_acquire);
+  }
+  next.state.store(NextEpisode::kEmpty, std::memory_order_relaxed);
+  if (state != NextEpisode::kReady || next.seed != EpisodeSeed(world, episode_counts_[world])) {
+    return false;  // none, or one of a seed given to Reset since
+  }
+  std::swap(worlds_[world], next.environment);
+  std::copy(next.observation.begin(), next.observation.end(), observation);
+  return true;
+}
+
+void BatchedEnvironment::PrepareNextEpisode(int world) {
+  if (pool_->num_threads() == 1) return;  // no worker to prepare it
+  NextEpisode& next = *next_episodes_[world];
+  next.seed = EpisodeSeed(world, episode_counts_[world] + 1);
+  next.state.store(NextEpisode::kQueued, std::memory_order_release);
+  pool_->RunWhenIdle([this, world] { BuildNextEpisode(world); });
+}
+
+void BatchedEnvironment::BuildNextEpisode(int world) {
+  NextEpisode& next = *next_episodes_[world];
+  int queued = NextEpisode::kQueued;
+  if (!next.state.compare_exchange_strong(queued, NextEpisode::kBuilding,
+                                          std::memory_order_acquire)) {
+    return;  // cancelled, or built by an earlier task of the same world
+  }
+  try {
+    next.environment->Reset(next.seed, next.observation.data());
+    next.state.store(NextEpisode::kReady, std::memory_order_release);
+  } catch (...) {
+    // The world then resets itself and meets the error in the step, where it is reported.
+    next.state.store(NextEpisode::kEmpty, std::memory_order_release);
   }
 }
 

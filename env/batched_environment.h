@@ -1,4 +1,4 @@
-// N training worlds stepped together by a thread pool, auto-resetting (EnvPool style).
+// N worlds stepped together by a thread pool, auto-resetting (EnvPool style).
 #pragma once
 
 #include <cstdint>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "env/environment_spec.h"
+#include "env/scenario.h"
 
 namespace colav {
 
@@ -17,26 +18,57 @@ class ThreadPool;
 /// with `seed` is generated from.
 std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t episode);
 
+/// The seed of test scenario k of an evaluation with `master_seed` (evaluate, the Python module):
+/// DeriveSeed(master_seed, "test-scenario", k). Every model meets the same worlds.
+std::uint64_t TestScenarioSeed(std::uint64_t master_seed, std::uint64_t k);
+
+/// Where a Reset or Step writes its results: num_envs rows each, in memory the caller owns (a
+/// Python binding's numpy arrays, say), so results need not be copied out.
+struct BatchedOutputs {
+  float* observations = nullptr;        ///< num_envs x kObservationSize
+  float* final_observations = nullptr;  ///< num_envs x kObservationSize; rows valid where done
+  float* rewards = nullptr;             ///< num_envs
+  std::uint8_t* terminated = nullptr;   ///< num_envs, 0 or 1
+  std::uint8_t* truncated = nullptr;    ///< num_envs, 0 or 1
+};
+
+/// With more than one thread, an idle worker prepares each world's next episode while the worlds
+/// step (ThreadPool::RunWhenIdle), so a world whose episode ends swaps it in instead of holding up
+/// the step with a reset, which costs about a hundred steps. The prepared episode is the one the
+/// world would reset to, so results do not depend on it.
 class BatchedEnvironment {
  public:
   /// num_envs worlds of the paper's training scenario; episode k of world i is generated from
   /// TrainingEpisodeSeed(seed, i, k), so a run is a pure function of `seed`.
   BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
                      std::uint64_t seed);
+  /// One world per scenario, each replaying its scenario in every episode (scenario files, the
+  /// evaluation's test worlds).
+  BatchedEnvironment(const EnvironmentConfig& config, const std::vector<Scenario>& scenarios,
+                     int num_threads);
   ~BatchedEnvironment();
   BatchedEnvironment(const BatchedEnvironment&) = delete;
   BatchedEnvironment& operator=(const BatchedEnvironment&) = delete;
 
   int num_envs() const { return num_envs_; }
 
-  /// Starts a new episode in every world; observations() then holds the reset observations.
-  void Reset();
+  /// Starts a new episode in every world: episode 0 on the first call, then the next episode of
+  /// each world (a running one is abandoned). With a seed, the worlds start over from episode 0
+  /// of that seed. observations() then holds the reset observations.
+  void Reset(std::optional<std::uint64_t> seed = std::nullopt);
+  /// The same, with the results written to `outputs`.
+  void Reset(std::optional<std::uint64_t> seed, const BatchedOutputs& outputs);
 
   /// Steps every world with actions (num_envs x kActionSize, row-major, clipped to [-1, 1]).
   /// A world whose episode ends is reset at once: observations() holds its new reset
   /// observation and final_observations() the last observation of the finished episode.
   void Step(const float* actions);
+  /// The same, with the results written to `outputs`; double actions are used as they are (a
+  /// float action is widened to double first, so both give the same step for float values).
+  void Step(const float* actions, const BatchedOutputs& outputs);
+  void Step(const double* actions, const BatchedOutputs& outputs);
 
+  // The results of the last Reset or Step that wrote to the environment's own buffers.
   const float* observations() const { return observations_.data(); }  ///< num_envs x 186
   const float* final_observations() const {
     return final_observations_.data();
@@ -44,19 +76,39 @@ class BatchedEnvironment {
   const float* rewards() const { return rewards_.data(); }
   const std::uint8_t* terminated() const { return terminated_.data(); }
   const std::uint8_t* truncated() const { return truncated_.data(); }
-  /// Per world: the record of the episode that ended on the last Step, if one did.
+  /// Per world: the record of the episode that ended on the last Step, if one did (whichever
+  /// outputs that Step wrote to).
   const std::vector<std::optional<EpisodeMetrics>>& finished_episodes() const {
     return finished_episodes_;
   }
 
  private:
-  void StepWorld(int index, const float* action);
+  BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
+                     std::uint64_t seed,
+                     const std::vector<std::shared_ptr<const ScenarioSource>>& sources);
+  struct NextEpisode;
+
+  BatchedOutputs OwnOutputs();
+  std::uint64_t EpisodeSeed(int world, std::uint64_t episode) const;
+  /// Starts world `world`'s episode episode_counts_[world], writing its first observation.
+  void StartEpisode(int world, float* observation);
+  /// Swaps in the prepared next episode if it is that episode; false otherwise.
+  bool TakeNextEpisode(int world, float* observation);
+  /// Queues the preparation of the episode after the current one.
+  void PrepareNextEpisode(int world);
+  void BuildNextEpisode(int world);
+  template <typename Action>
+  void StepAll(const Action* actions, const BatchedOutputs& outputs);
+  template <typename Action>
+  void StepWorld(int world, const Action* action, const BatchedOutputs& outputs);
 
   int num_envs_;
   std::uint64_t seed_;
+  bool started_ = false;
   std::vector<std::unique_ptr<Environment>> worlds_;
   std::vector<std::uint64_t> episode_counts_;
-  std::unique_ptr<ThreadPool> pool_;
+  std::vector<std::unique_ptr<NextEpisode>> next_episodes_;
+  std::unique_ptr<ThreadPool> pool_;  // after what its idle tasks use: destroyed first
   std::vector<float> observations_;
   std::vector<float> final_observations_;
   std::vector<float> rewards_;

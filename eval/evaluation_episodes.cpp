@@ -10,13 +10,8 @@
 #include "eval/safe_name.h"
 #include "src/error.h"
 #include "src/random.h"
-#include "src/seeding.h"
 
 namespace colav {
-
-std::uint64_t TestScenarioSeed(std::uint64_t master_seed, int k) {
-  return DeriveSeed(master_seed, "test-scenario", static_cast<std::uint64_t>(k));
-}
 
 std::vector<EvaluationEpisode> TestEpisodes(std::uint64_t master_seed, int count) {
   const TrainingScenarioGenerator generator;
@@ -24,7 +19,7 @@ std::vector<EvaluationEpisode> TestEpisodes(std::uint64_t master_seed, int count
   for (int k = 0; k < count; ++k) {
     char name[32];
     std::snprintf(name, sizeof name, "test-%03d", k);
-    const std::uint64_t seed = TestScenarioSeed(master_seed, k);
+    const std::uint64_t seed = TestScenarioSeed(master_seed, static_cast<std::uint64_t>(k));
     episodes.push_back({name, seed, generator.Make(seed)});
   }
   return episodes;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "env/batched_environment.h"
 #include "env/scenario.h"
 
 namespace colav {
@@ -22,10 +23,8 @@ struct EvaluationEpisode {
   Scenario scenario;
 };
 
-/// Seed of test scenario k: DeriveSeed(master_seed, "test-scenario", k).
-std::uint64_t TestScenarioSeed(std::uint64_t master_seed, int k);
-
-/// Test scenarios 0 .. count-1 ("test-000", ...), training worlds of TestScenarioSeed.
+/// Test scenarios 0 .. count-1 ("test-000", ...), training worlds of TestScenarioSeed
+/// (env/batched_environment.h).
 std::vector<EvaluationEpisode> TestEpisodes(std::uint64_t master_seed, int count);
 
 /// One episode per scenario file, named by the file's `name` (else its file name without

@@ -8,6 +8,7 @@ PACKAGES=(
   libyaml-cpp-dev nlohmann-json3-dev libspdlog-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox python3 python3-torch python3-h5py python3-numpy
+  pybind11-dev python3-dev python3-pytest
 )
 
 missing=()

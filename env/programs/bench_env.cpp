@@ -4,11 +4,13 @@
 #include <chrono>
 #include <cstdio>
 #include <functional>
+#include <limits>
 
 #include "env/batched_environment.h"
 #include "env/environment.h"
 #include "env/training_scenario.h"
 #include "src/cli.h"
+#include "src/number_flag.h"
 #include "src/random.h"
 #include "src/threads/thread_pool.h"
 
@@ -16,6 +18,10 @@ namespace colav {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// As many worlds and threads as train_ppo's ppo.n_envs and a machine can use.
+constexpr int kMaxEnvs = 1024;
+constexpr int kMaxThreads = 256;
 
 // Runs `step` (which performs `per_call` env steps) repeatedly for about `seconds` and returns
 // steps per second.
@@ -70,21 +76,26 @@ int BenchEnv(int argc, char** argv) {
   int num_envs = 8;
   int num_threads = ThreadCountOrAllCores(0);
   std::uint64_t seed = 1;
-  app.add_option("--seconds", seconds, "measuring time per case")->check(CLI::PositiveNumber);
-  app.add_option("--envs", num_envs, "worlds in the batched case")->check(CLI::PositiveNumber);
-  app.add_option("--threads", num_threads, "threads in the batched case (default: all cores)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--seed", seed, "seed of the worlds and actions");
+  AddNumberFlag(app, "--seconds", seconds, "measuring time per case", 0.01, 3600.0);
+  AddNumberFlag(app, "--envs", num_envs, "worlds in the batched case", 1, kMaxEnvs);
+  AddNumberFlag(app, "--threads", num_threads, "threads in the batched case (default: all cores)",
+                1, kMaxThreads);
+  AddNumberFlag<std::uint64_t>(app, "--seed", seed, "seed of the worlds and actions", 0,
+                               std::numeric_limits<std::uint64_t>::max());
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
+  config_flags.Resolve();  // no keys: rejects any in --set or --config
 
   const double fixed = SingleEnvironment(seconds, false, seed);
   std::printf("1 thread, fixed action (full thrust)   %12.0f steps/s\n", fixed);
   const double random = SingleEnvironment(seconds, true, seed);
   std::printf("1 thread, random actions              %12.0f steps/s\n", random);
+  const double batched_one_thread = Batched(seconds, num_envs, 1, seed);
+  std::printf("%d worlds on 1 thread, random actions  %12.0f steps/s\n", num_envs,
+              batched_one_thread);
   const double batched = Batched(seconds, num_envs, num_threads, seed);
-  std::printf("%d worlds on %d threads, random actions %12.0f steps/s\n", num_envs, num_threads,
-              batched);
+  std::printf("%d worlds on %d threads, random actions %12.0f steps/s (%.2fx of 1 thread)\n",
+              num_envs, num_threads, batched, batched / batched_one_thread);
   std::printf("env_steps_per_s_1thread: %.0f\nenv_steps_per_s_batched: %.0f\n", random, batched);
   return 0;
 }

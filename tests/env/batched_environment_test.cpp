@@ -67,5 +67,51 @@ TEST(BatchedEnvironment, AutoResetHandsBackFinalObservation) {
   }
 }
 
+// Short episodes: most steps swap in a next episode prepared by the worker (or reset inline when
+// it is not ready), and Reset with and without a seed restarts or moves on.
+std::vector<float> ShortEpisodesRun(int num_threads) {
+  EnvironmentConfig config;
+  config.max_steps = 7;
+  BatchedEnvironment envs(config, 5, num_threads, 3);
+  std::vector<float> observations(5 * kObservationSize);
+  std::vector<float> final_observations(observations.size());
+  std::vector<float> rewards(5);
+  std::vector<std::uint8_t> terminated(5);
+  std::vector<std::uint8_t> truncated(5);
+  const BatchedOutputs outputs{observations.data(), final_observations.data(), rewards.data(),
+                               terminated.data(), truncated.data()};
+  std::vector<float> run;
+  const std::vector<double> actions(5 * kActionSize, 0.5);
+  for (const std::optional<std::uint64_t> seed :
+       {std::optional<std::uint64_t>(3), std::optional<std::uint64_t>(),
+        std::optional<std::uint64_t>(4)}) {
+    envs.Reset(seed, outputs);
+    run.insert(run.end(), observations.begin(), observations.end());
+    for (int t = 0; t < 60; ++t) {
+      envs.Step(actions.data(), outputs);
+      run.insert(run.end(), observations.begin(), observations.end());
+      run.insert(run.end(), rewards.begin(), rewards.end());
+    }
+  }
+  return run;
+}
+
+TEST(BatchedEnvironment, PreparedEpisodesGiveTheSameResultsAsResets) {
+  const std::vector<float> one = ShortEpisodesRun(1);
+  EXPECT_EQ(one, ShortEpisodesRun(2));
+  EXPECT_EQ(one, ShortEpisodesRun(3));
+}
+
+TEST(BatchedEnvironment, ResetWithASeedStartsOverWithoutMovesOn) {
+  BatchedEnvironment envs(EnvironmentConfig{}, 2, 2, 5);
+  envs.Reset();
+  const std::vector<float> first(envs.observations(), envs.observations() + kObservationSize);
+  envs.Reset();
+  const std::vector<float> next(envs.observations(), envs.observations() + kObservationSize);
+  envs.Reset(5);
+  EXPECT_EQ(first, std::vector<float>(envs.observations(), envs.observations() + kObservationSize));
+  EXPECT_NE(first, next);
+}
+
 }  // namespace
 }  // namespace colav

@@ -1,0 +1,197 @@
+"""colav.Env (one world, Gymnasium Env) and colav.VectorEnv (a batch of worlds stepped by the C++
+thread pool, Gymnasium VectorEnv). With Gymnasium installed they subclass its classes."""
+
+import numbers
+import os
+
+import numpy as np
+
+from . import _colav
+from ._spaces import action_space, gymnasium, observation_space
+
+_EnvBase = gymnasium.Env if gymnasium is not None else object
+_VectorEnvBase = gymnasium.vector.VectorEnv if gymnasium is not None else object
+# Autoreset as EnvPool does it (Gymnasium's "same-step" mode): see VectorEnv.
+_autoreset_modes = getattr(gymnasium.vector, "AutoresetMode", None) if gymnasium else None
+_SAME_STEP = _autoreset_modes.SAME_STEP if _autoreset_modes is not None else "SameStep"
+
+
+def _setting_text(value):
+    """A keyword value as the text a config file would hold (the C++ side parses and checks it)."""
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, numbers.Real) and not isinstance(value, numbers.Integral):
+        return repr(float(value))
+    return str(value)
+
+
+def _resolve(settings, origin):
+    return _colav.resolve_settings({name: _setting_text(v) for name, v in settings.items()}, origin)
+
+
+def _scenario(scenario):
+    """A Scenario from a scenario file path, or the Scenario itself."""
+    if isinstance(scenario, _colav.Scenario):
+        return scenario
+    if isinstance(scenario, (str, os.PathLike)):
+        return _colav.load_scenario_file(os.fspath(scenario))
+    raise TypeError(f"scenario: expected a file path or a colav.Scenario, got {scenario!r}")
+
+
+def _whole_number(name, value, minimum):
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < minimum:
+        raise ValueError(f"{name}: expected an integer >= {minimum}, got {value!r}")
+    return int(value)
+
+
+def _optional_seed(seed):
+    return None if seed is None else _whole_number("seed", seed, 0)
+
+
+def _check_options(options):
+    """reset() takes Gymnasium's `options` argument; no option is defined yet."""
+    if options is not None and not isinstance(options, dict):
+        raise TypeError(f"options: expected a dict or None, got {options!r}")
+    if options:
+        raise ValueError(f"options: unknown option(s) {sorted(options)} (none is defined)")
+
+
+class _Closed:
+    """Stands in for the C++ environment after close(): any use is an error."""
+
+    def __getattr__(self, name):
+        raise RuntimeError("the environment is closed")
+
+
+class Env(_EnvBase):
+    """One world with the Gymnasium Env interface.
+
+    Env(seed=0, scenario=None, **settings): training worlds (episode k is the world of episode k
+    of world 0 of make_vec(seed=seed)), or, with `scenario` (a scenario file path or a
+    colav.Scenario), that scenario in every episode. `settings` are the env.* keys of the programs'
+    configuration (colav.env_settings()), e.g. closeness="log", test_mode=True, max_steps=500.
+
+    Actions are used in double precision, as `simulate` uses them. step() returns
+    (obs float32 [186], reward float, terminated bool, truncated bool, info); info is {} except on
+    the last step of an episode: {"episode_metrics": {...}} (what evaluate records). state() gives
+    the world behind the observation (the columns of a `simulate` trace).
+    """
+
+    metadata = {"render_modes": []}
+    render_mode = None
+
+    def __init__(self, seed=0, *, scenario=None, **settings):
+        resolved = _resolve(settings, "colav.Env")
+        self.settings = resolved.values
+        self._core = _colav.SingleEnvironment(
+            resolved, None if scenario is None else _scenario(scenario),
+            _whole_number("seed", seed, 0),
+        )
+        self.observation_space = observation_space()
+        self.action_space = action_space()
+
+    def reset(self, *, seed=None, options=None):
+        """Starts the next episode, or with a seed episode 0 of that seed; returns (obs, {})."""
+        _check_options(options)
+        if gymnasium is not None:
+            super().reset(seed=seed)  # seeds self.np_random, as Gymnasium expects
+        return self._core.reset(_optional_seed(seed)), {}
+
+    def step(self, action):
+        obs, reward, terminated, truncated, metrics = self._core.step(action)
+        info = {} if metrics is None else {"episode_metrics": metrics}
+        return obs, reward, terminated, truncated, info
+
+    def state(self):
+        """{"vessel": [x, y, psi, u, v, r], "cross_track_error", "heading_error",
+        "look_ahead_heading_error", "progress", "collision", "ranges": [180] (m)}."""
+        return self._core.state()
+
+    def render(self):
+        """No render modes yet: returns None."""
+        return None
+
+    def close(self):
+        self._core = _Closed()
+
+
+class VectorEnv(_VectorEnvBase):
+    """A batch of worlds stepped together in C++ on a thread pool, with the GIL released.
+
+    VectorEnv(num_envs=8, seed=0, scenarios=None, num_threads=0, **settings): num_envs training
+    worlds (episode k of world i is generated from the seed, world and k alone), or one world per
+    entry of `scenarios` (scenario file paths or colav.Scenario objects, e.g.
+    colav.training_scenario(s)) replaying it in every episode. num_threads 0 uses every core.
+    `settings` as for colav.Env.
+
+    step(actions [N, 2]) returns (obs float32 [N, 186], reward float32 [N], terminated bool [N],
+    truncated bool [N], info). float32 actions are read in place, other dtypes are converted.
+
+    Autoreset (same step, as EnvPool): a world whose episode ends on a step is reset within that
+    step. The returned obs row is already the first observation of its next episode, and
+    terminated/truncated say the previous one ended; info then holds "final_obs" [N, 186] (the
+    last observation of the finished episode) and "episode_metrics" ({metric: [N]}), with the masks
+    "_final_obs" and "_episode_metrics" marking the worlds concerned. Otherwise info is {}.
+
+    The returned arrays belong to the environment and are not allocated per step: the next step
+    writes to a second set, and the step after that overwrites them. Copy what you keep longer.
+    """
+
+    metadata = {"autoreset_mode": _SAME_STEP, "render_modes": []}
+    render_mode = None
+
+    def __init__(self, num_envs=None, seed=0, *, scenarios=None, num_threads=0, **settings):
+        resolved = _resolve(settings, "colav.VectorEnv")
+        self.settings = resolved.values
+        threads = _whole_number("num_threads", num_threads, 0)
+        if scenarios is None:
+            count = 8 if num_envs is None else _whole_number("num_envs", num_envs, 1)
+            self._core = _colav.VectorEnvironment(
+                resolved, count, _whole_number("seed", seed, 0), threads
+            )
+        else:
+            loaded = [_scenario(scenario) for scenario in scenarios]
+            if not loaded or num_envs not in (None, len(loaded)):
+                raise ValueError(
+                    f"num_envs: {num_envs} worlds for {len(loaded)} scenarios (give one or more "
+                    "scenarios and leave num_envs out)"
+                )
+            self._core = _colav.VectorEnvironment(resolved, loaded, threads)
+        self.num_envs = self._core.num_envs
+        self.single_observation_space = observation_space()
+        self.single_action_space = action_space()
+        self.observation_space = observation_space(self.num_envs)
+        self.action_space = action_space(self.num_envs)
+        self.closed = False
+
+    def reset(self, *, seed=None, options=None):
+        """New episodes everywhere: the next ones, or with a seed episode 0 of that seed (one
+        integer for all worlds). Returns (obs, {})."""
+        _check_options(options)
+        if isinstance(seed, (list, tuple)):
+            raise ValueError("seed: give one integer; it seeds every world")
+        if gymnasium is not None:
+            super().reset(seed=seed)  # seeds self.np_random, as Gymnasium expects
+        return self._core.reset(_optional_seed(seed)), {}
+
+    def step(self, actions):
+        obs, reward, terminated, truncated, finished = self._core.step(actions)
+        return obs, reward, terminated, truncated, (self._core.finished_episodes() if finished else {})
+
+    def render(self):
+        """No render modes yet: returns None."""
+        return None
+
+    def close(self, **kwargs):
+        self._core = _Closed()
+        self.closed = True
+
+
+def make(seed=0, *, scenario=None, **settings):
+    """colav.Env(seed, scenario=..., **settings)."""
+    return Env(seed, scenario=scenario, **settings)
+
+
+def make_vec(num_envs=None, seed=0, *, scenarios=None, num_threads=0, **settings):
+    """colav.VectorEnv(num_envs, seed, scenarios=..., num_threads=..., **settings)."""
+    return VectorEnv(num_envs, seed, scenarios=scenarios, num_threads=num_threads, **settings)

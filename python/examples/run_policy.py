@@ -1,0 +1,88 @@
+"""Runs a trained policy (policy.pt, TorchScript) on evaluate's test scenarios, or on scenario
+files, in the batched environment, and prints the metrics evaluate reports (evaluate adds the
+confidence intervals and the paired comparisons between models).
+
+    PYTHONPATH=build/python /usr/bin/python3 python/examples/run_policy.py runs/ppo_baseline/policy.pt
+    ... run_policy.py POLICY --scenario configs/scenarios/head-on.yaml --scenario ...
+"""
+
+import argparse
+import os
+import re
+
+import numpy as np
+import torch
+
+import colav
+
+
+def observation_settings(path, policy):
+    """The env settings the policy was trained with, found where evaluate looks: the file's
+    `observation_settings` record, else the sidecar file "<policy>.yaml"; both hold
+    "env:\\n  closeness: linear|log" (env/observation_settings.h). {} when neither exists."""
+    text = getattr(policy, "observation_settings", None)
+    if text is None and os.path.exists(path + ".yaml"):
+        with open(path + ".yaml", encoding="utf-8") as sidecar:
+            text = sidecar.read()
+    match = re.search(r"^\s*closeness:\s*(\S+)", text or "", re.MULTILINE)
+    return {"closeness": match.group(1)} if match else {}
+
+
+def run_episodes(policy, envs):
+    """Each world's first episode under the policy's deterministic actions; returns the episode
+    metrics per world. Only unfinished episodes go through the policy, at least two rows at a
+    time, as evaluate does, so the numbers are evaluate's to the last bit."""
+    obs, _ = envs.reset()
+    results = [None] * envs.num_envs
+    actions = np.zeros((envs.num_envs, colav.ACTION_SIZE), dtype=np.float32)
+    while any(result is None for result in results):
+        active = [i for i, result in enumerate(results) if result is None]
+        rows = active if len(active) > 1 else active * 2
+        with torch.no_grad():
+            actions[active] = policy(torch.from_numpy(obs[rows])).numpy()[: len(active)]
+        obs, _, _, _, info = envs.step(actions)
+        for i in np.flatnonzero(info.get("_episode_metrics", [])):
+            if results[i] is None:
+                results[i] = {name: column[i].item() for name, column in info["episode_metrics"].items()}
+    return results
+
+
+def summary_lines(results):
+    """evaluate's summary rows: mean (sd) over the episodes."""
+    def column(name, scale=1.0):
+        values = np.array([r[name] for r in results], dtype=float) * scale
+        return f"{values.mean():.1f} (sd {values.std(ddof=1) if len(values) > 1 else 0.0:.1f})"
+
+    goals = sum(r["goal_reached"] for r in results)
+    return [
+        f"progress %              {column('progress', 100.0)}",
+        f"cross-track error (m)   {column('mean_abs_cte')}",
+        f"duration (steps)        {column('steps')}",
+        f"collisions %            {column('collision', 100.0)}",
+        f"reward                  {column('cumulative_reward')}",
+        f"goals reached %         {100.0 * goals / len(results):.1f} ({goals}/{len(results)})",
+        f"truncated episodes      {sum(r['truncated'] for r in results)}",
+    ]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("policy", help="policy.pt (forward: obs [B, 186] -> action [B, 2])")
+    parser.add_argument("--episodes", type=int, default=100, help="test scenarios")
+    parser.add_argument("--seed", type=int, default=0, help="master seed of the test scenarios")
+    parser.add_argument("--scenario", action="append", help="scenario file, repeatable")
+    args = parser.parse_args()
+
+    torch.set_num_threads(1)  # tiny networks: threads only add overhead
+    policy = torch.jit.load(args.policy)
+    scenarios = args.scenario or colav.evaluation_scenarios(args.episodes, args.seed)
+    settings = observation_settings(args.policy, policy)
+    envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
+    results = run_episodes(policy, envs)
+    where = "scenario files" if args.scenario else f"test scenarios of master seed {args.seed}"
+    print(f"{args.policy} over {len(results)} episodes ({where}; {settings or 'default settings'}):")
+    print("\n".join("  " + line for line in summary_lines(results)))
+
+
+if __name__ == "__main__":
+    main()

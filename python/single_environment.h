@@ -1,0 +1,49 @@
+// The C++ side of colav.Env: one world, stepped in double precision exactly as `simulate` steps
+// it, with its state readable for traces and pictures.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstdint>
+#include <optional>
+
+#include "env/environment.h"
+#include "python/settings.h"
+
+namespace colav::python {
+
+namespace py = pybind11;
+
+class SingleEnvironment {
+ public:
+  /// Training worlds: episode k is the world of TrainingEpisodeSeed(seed, 0, k), as world 0 of a
+  /// VectorEnvironment with the same seed. With a scenario, every episode replays it.
+  SingleEnvironment(const ResolvedSettings& settings, std::optional<Scenario> scenario,
+                    std::uint64_t seed);
+
+  /// Starts the next episode (with a seed: episode 0 of that seed); returns its observation.
+  py::array_t<float> Reset(std::optional<std::uint64_t> seed);
+
+  /// Advances one second under `action` (2 numbers, clipped to [-1, 1]); returns (observation,
+  /// reward, terminated, truncated, episode metrics or None). A step after the episode ended and
+  /// before a reset is an error.
+  py::tuple Step(const py::object& action);
+
+  /// {"vessel": [x, y, psi, u, v, r], "cross_track_error", "heading_error",
+  /// "look_ahead_heading_error", "progress", "collision", "ranges": [180]}: the world after the
+  /// last reset or step (the columns of a `simulate` trace).
+  py::dict State() const;
+
+ private:
+  Environment environment_;
+  std::uint64_t seed_;
+  std::uint64_t episode_ = 0;
+  bool started_ = false;
+  bool episode_running_ = false;
+};
+
+/// Registers SingleEnvironment as _colav.SingleEnvironment.
+void BindSingleEnvironment(py::module_& module);
+
+}  // namespace colav::python

@@ -1,0 +1,25 @@
+"""Shared fixtures of the Python tests. CTest (tests/CMakeLists.txt) sets PYTHONPATH to the
+build's python folder and COLAV_BIN_DIR, COLAV_SOURCE_DIR, COLAV_GOLDEN_DIR."""
+
+import os
+import pathlib
+import subprocess
+
+import pytest
+
+SOURCE_DIR = pathlib.Path(os.environ.get("COLAV_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+BIN_DIR = pathlib.Path(os.environ.get("COLAV_BIN_DIR", SOURCE_DIR / "build" / "bin"))
+GOLDEN_DIR = pathlib.Path(os.environ.get("COLAV_GOLDEN_DIR", SOURCE_DIR.parent / "shared" / "golden"))
+SCENARIO_FILES = sorted((SOURCE_DIR / "configs" / "scenarios").glob("*.yaml"))
+
+
+def run_program(name, *args):
+    """Runs build/bin/NAME with args; fails the test with its output if it fails."""
+    result = subprocess.run([str(BIN_DIR / name), *map(str, args)], capture_output=True, text=True)
+    assert result.returncode == 0, f"{name} failed:\n{result.stdout}\n{result.stderr}"
+    return result.stdout
+
+
+@pytest.fixture
+def source_dir():
+    return SOURCE_DIR

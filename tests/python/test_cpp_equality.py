@@ -1,0 +1,144 @@
+"""Python gives what the programs give: a scenario stepped from Python writes the trace `simulate`
+writes, byte for byte, and a policy run from Python scores the metrics `evaluate` records."""
+
+import csv
+import importlib.util
+
+import numpy as np
+import pytest
+import torch
+
+import colav
+from conftest import GOLDEN_DIR, SCENARIO_FILES, SOURCE_DIR, run_program
+
+GOLDEN_CASES = sorted((GOLDEN_DIR / "visible").glob("*.scenario.yaml"))
+
+
+def range_text(distance):
+    """As env/trace.cpp prints a range: at most 4 decimals, trailing zeros stripped."""
+    return ("%.4f" % distance).rstrip("0").rstrip(".")
+
+
+def trace_row(step, state, reward=0.0, terminated=False, truncated=False):
+    """One row of a `simulate` trace (env/trace.cpp) from Env.state() and the step's result."""
+    numbers = [*state["vessel"], state["cross_track_error"], state["heading_error"],
+               state["look_ahead_heading_error"], state["progress"], reward]
+    flags = [terminated, truncated, state["collision"]]
+    return ",".join([str(step)] + ["%.12g" % x for x in numbers] + [str(int(f)) for f in flags]
+                    + [range_text(r) for r in state["ranges"]])
+
+
+def python_trace(scenario_file, actions):
+    env = colav.make(scenario=scenario_file)
+    env.reset()
+    rows = [trace_row(0, env.state())]
+    for step, action in enumerate(actions, start=1):
+        _, reward, terminated, truncated, _ = env.step(action)
+        rows.append(trace_row(step, env.state(), reward, terminated, truncated))
+        if terminated or truncated:
+            break
+    return rows
+
+
+def read_actions(path):
+    with open(path, encoding="utf-8") as file:
+        return [[float(a0), float(a1)] for a0, a1 in list(csv.reader(file))[1:]]
+
+
+def assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path):
+    trace_file = tmp_path / "trace.csv"
+    run_program("simulate", "--scenario", scenario_file, "--actions", actions_file,
+                "--out", trace_file)
+    expected = trace_file.read_text().splitlines()
+    actual = python_trace(scenario_file, read_actions(actions_file))
+    assert len(actual) == len(expected) - 1  # simulate also writes the header
+    for row, (mine, theirs) in enumerate(zip(actual, expected[1:])):
+        assert mine == theirs, f"row {row} differs"
+
+
+@pytest.mark.skipif(not GOLDEN_CASES, reason=f"no golden cases in {GOLDEN_DIR}")
+@pytest.mark.parametrize("scenario_file", GOLDEN_CASES, ids=lambda p: p.name.split(".")[0])
+def test_golden_case_from_python_is_the_simulate_trace(scenario_file, tmp_path):
+    actions_file = scenario_file.with_name(scenario_file.name.replace(".scenario.yaml",
+                                                                      ".actions.csv"))
+    assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path)
+
+
+@pytest.mark.parametrize("scenario_file", SCENARIO_FILES, ids=lambda p: p.stem)
+def test_scenario_file_from_python_is_the_simulate_trace(scenario_file, tmp_path):
+    rng = np.random.default_rng(len(scenario_file.stem))
+    actions_file = tmp_path / "actions.csv"
+    rows = ["%.6f,%.6f" % (a0, a1) for a0, a1 in rng.uniform(-0.2, 1.0, size=(300, 2))]
+    actions_file.write_text("a0,a1\n" + "\n".join(rows) + "\n")
+    assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path)
+
+
+class TinyPolicy(torch.nn.Module):
+    """A policy.pt as train_ppo writes one (forward: obs [B, 186] -> action [B, 2] in [-1, 1]),
+    with fixed random weights and a bias towards full thrust."""
+
+    def __init__(self):
+        super().__init__()
+        torch.manual_seed(0)
+        self.hidden = torch.nn.Linear(186, 16)
+        self.out = torch.nn.Linear(16, 2)
+        with torch.no_grad():
+            self.out.bias[0] = 2.0
+
+    def forward(self, obs):
+        return torch.tanh(self.out(torch.tanh(self.hidden(obs))))
+
+
+@pytest.fixture(scope="module")
+def policy_file(tmp_path_factory):
+    path = tmp_path_factory.mktemp("policy") / "policy.pt"
+    torch.jit.script(TinyPolicy()).save(str(path))
+    (path.parent / "policy.pt.yaml").write_text("env:\n  closeness: log\n")  # evaluate's sidecar
+    return path
+
+
+def run_policy_example():
+    spec = importlib.util.spec_from_file_location(
+        "run_policy", SOURCE_DIR / "python" / "examples" / "run_policy.py")
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def evaluate_episodes(policy_file, out, *arguments):
+    run_program("evaluate", "--policy", policy_file, "--trajectories", 0, "--threads", 2,
+                "--out", out, *arguments)
+    with open(out / "episodes.csv", encoding="utf-8") as file:
+        return list(csv.DictReader(file))
+
+
+def python_episodes(policy_file, scenarios):
+    example = run_policy_example()
+    policy = torch.jit.load(str(policy_file))
+    settings = example.observation_settings(str(policy_file), policy)
+    assert settings == {"closeness": "log"}
+    envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
+    return example.run_episodes(policy, envs)
+
+
+def assert_same_metrics(python, evaluate):
+    assert len(python) == len(evaluate)
+    columns = {"progress": "progress", "mean_abs_cte": "mean_cte", "steps": "steps",
+               "collision": "collision", "goal_reached": "goal", "truncated": "truncated",
+               "cumulative_reward": "reward", "path_length": "path_length"}
+    for mine, theirs in zip(python, evaluate):
+        for key, column in columns.items():
+            assert float(mine[key]) == float(theirs[column]), f"{theirs['scenario']}: {key}"
+
+
+def test_policy_from_python_scores_evaluate_metrics_on_test_scenarios(policy_file, tmp_path):
+    evaluate = evaluate_episodes(policy_file, tmp_path / "eval", "--episodes", 6, "--seed", 3)
+    assert [int(row["seed"]) for row in evaluate] == colav.evaluation_scenario_seeds(6, seed=3)
+    assert_same_metrics(python_episodes(policy_file, colav.evaluation_scenarios(6, seed=3)),
+                        evaluate)
+
+
+def test_policy_from_python_scores_evaluate_metrics_on_scenario_files(policy_file, tmp_path):
+    files = [arg for path in SCENARIO_FILES for arg in ("--scenario", path)]
+    evaluate = evaluate_episodes(policy_file, tmp_path / "eval", *files)
+    assert_same_metrics(python_episodes(policy_file, SCENARIO_FILES), evaluate)

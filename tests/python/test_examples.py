@@ -1,0 +1,46 @@
+"""Every example in python/examples/ runs (quickly, with small arguments)."""
+
+import os
+import subprocess
+import sys
+
+import pytest
+import torch
+
+from conftest import SCENARIO_FILES, SOURCE_DIR
+
+EXAMPLES = SOURCE_DIR / "python" / "examples"
+
+
+def run_example(name, *args):
+    result = subprocess.run([sys.executable, str(EXAMPLES / name), *map(str, args)],
+                            capture_output=True, text=True, env=dict(os.environ))
+    assert result.returncode == 0, f"{name} failed:\n{result.stdout}\n{result.stderr}"
+    return result.stdout
+
+
+def test_every_example_is_tested():
+    tested = {"random_agent.py", "run_policy.py", "scenario_file.py", "bench_python.py"}
+    assert {path.name for path in EXAMPLES.glob("*.py")} == tested
+
+
+def test_random_agent():
+    assert "episodes ended" in run_example("random_agent.py", "--steps", 600, "--envs", 4)
+
+
+@pytest.mark.parametrize("scenario_file", SCENARIO_FILES[:2], ids=lambda p: p.stem)
+def test_scenario_file(scenario_file):
+    assert "progress" in run_example("scenario_file.py", scenario_file)
+
+
+def test_run_policy(tmp_path):
+    policy = torch.jit.script(torch.nn.Sequential(torch.nn.Linear(186, 2), torch.nn.Tanh()))
+    policy.save(str(tmp_path / "policy.pt"))
+    output = run_example("run_policy.py", tmp_path / "policy.pt", "--episodes", 3)
+    assert "over 3 episodes" in output and "collisions %" in output
+    output = run_example("run_policy.py", tmp_path / "policy.pt", "--scenario", SCENARIO_FILES[0])
+    assert "over 1 episodes (scenario files" in output
+
+
+def test_bench_python():
+    assert "steps/s" in run_example("bench_python.py", "--seconds", 0.2, "--envs", 2)
