@@ -79,7 +79,7 @@ void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
              fmt::format(" {}", y);
   }
   script << MultiplotLayout(2, 2, GnuplotEnhancedText(title)) << LightGrid()
-         << fmt::format("set yrange [0.5:{}]\nset ytics ({})\nset key bottom right\n",
+         << fmt::format("set yrange [0.5:{}]\nset ytics ({})\nset key below horizontal\n",
                         report.models.size() + 0.5, ytics);
   for (const char* metric : kFigureMetrics) {
     std::ostringstream seeds;
@@ -136,7 +136,9 @@ void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& result
   script << MultiplotLayout(2, 2,
                             GnuplotEnhancedText("Beta sweep: " + sweep.front().second + " ... " +
                                                 sweep.back().second))
-         << LightGrid() << "set xlabel 'beta of the VAE'\nset key top right\n";
+         << LightGrid()
+         << "set xlabel 'beta of the VAE'\nset key below horizontal\nset offsets graph 0.04, graph "
+            "0.04, 0, 0\n";
   for (const char* metric : kFigureMetrics) {
     std::ostringstream estimates;
     std::ostringstream seeds;

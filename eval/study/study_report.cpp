@@ -196,6 +196,11 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
 // The figures that the study's figure jobs drew (job_graph.h): the VAE figures, the training
 // curves of each configuration.
 void JobFigures(std::ostringstream& md, const StudySpec& spec, const std::filesystem::path& out) {
+  const std::filesystem::path vae = VaeFiguresFolder();
+  if (std::filesystem::exists(out / vae / "latent_kde.png")) {
+    md << "\n## The VAE figures\n\n![decoder padding](" << (vae / "padding_comparison.png").string()
+       << ")\n\n![latent densities](" << (vae / "latent_kde.png").string() << ")\n";
+  }
   md << "\n## Training\n";
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     const std::filesystem::path png = TrainingFigurePath(config.name);
