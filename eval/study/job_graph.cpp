@@ -177,6 +177,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
       job.args.insert(job.args.end(),
                       {"--policy", group.policies[m].string(), "--name", group.models[m]});
     }
+    job.expected_models = group.models;
     job.args.insert(job.args.end(),
                     {"--episodes", std::to_string(group.episodes), "--seed",
                      std::to_string(group.seed), "--trajectories", "0", "--out", dir.string()});

@@ -24,6 +24,9 @@ struct StudyJob {
   std::filesystem::path resume_marker;    ///< exists while an interrupted run can be continued
   std::vector<std::size_t> dependencies;  ///< indices of jobs that must finish first
   double estimated_s = 1.0;               ///< for the ETA and to start long jobs first
+  /// Evaluations: complete only when their summary lists exactly these models (a study that gained
+  /// configurations evaluates again).
+  std::vector<std::string> expected_models;
   /// Checked with --print-config before the study starts (one seed stands for its siblings).
   bool check_configuration = true;
 };

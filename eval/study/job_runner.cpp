@@ -110,12 +110,23 @@ pid_t Launch(const StudyJob& job, bool resume, const JobRunnerOptions& options) 
 
 // The complete marker exists and, for a summary that says whether its run finished (train_ppo
 // writes one when stopped too), says so.
+// The model names of an evaluate summary.json, in order (empty when it has none).
+std::vector<std::string> EvaluatedModels(const nlohmann::json& summary) {
+  std::vector<std::string> names;
+  if (!summary.contains("models") || !summary["models"].is_array()) return names;
+  for (const nlohmann::json& model : summary["models"]) {
+    if (model.contains("name") && model["name"].is_string()) names.push_back(model["name"]);
+  }
+  return names;
+}
+
 bool Complete(const StudyJob& job) {
   if (!std::filesystem::exists(job.complete_marker)) return false;
   if (job.complete_marker.extension() != ".json") return true;
   std::ifstream in(job.complete_marker);
   const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  return !summary.is_discarded() && summary.value("finished", true);
+  if (summary.is_discarded() || !summary.value("finished", true)) return false;
+  return job.expected_models.empty() || EvaluatedModels(summary) == job.expected_models;
 }
 
 // The last non-empty line of `text`.

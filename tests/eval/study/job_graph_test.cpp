@@ -83,6 +83,8 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
   const StudyJob& evaluation = Find(jobs, "eval/study");
   EXPECT_EQ(evaluation.dependencies.size(), 9U);  // every PPO run; the agent file exists
   EXPECT_TRUE(Has(evaluation.args, {"--episodes", "20", "--seed", "1"}));
+  // Complete only when its summary lists exactly these models.
+  EXPECT_EQ(evaluation.expected_models, groups[0].models);
   // Each policy brings its own observation settings: the evaluation sets none.
   EXPECT_FALSE(Has(evaluation.args, {"--set"}));
 }
