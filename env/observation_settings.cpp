@@ -2,11 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
-#include <sstream>
-
 #include "env/environment_config.h"
 #include "src/error.h"
+#include "src/yaml_file.h"
 
 namespace colav {
 namespace {
@@ -23,6 +21,29 @@ YAML::Node LoadYamlText(const std::string& text, const std::string& source) {
   } catch (const YAML::Exception& e) {
     throw UserError(source + ": malformed observation settings (" + e.msg + ")");
   }
+}
+
+// The settings of a parsed record or sidecar; `source` names it in errors.
+ObservationSettings SettingsFromYaml(const YAML::Node& root, const std::string& source) {
+  if (!root.IsMap() || root.size() != 1 || !root["env"] || !root["env"].IsMap()) {
+    throw UserError(source + ": observation settings must be one map 'env:' (e.g. env: {" +
+                    kClosenessKey + ": log})");
+  }
+  ObservationSettings settings;
+  for (const auto& item : root["env"]) {
+    const std::string key = item.first.as<std::string>();
+    if (key != kClosenessKey) {
+      throw UserError(source + ": env." + key +
+                      " is not an observation setting (only env.closeness belongs here)");
+    }
+    if (!item.second.IsScalar()) throw UserError(source + ": env.closeness must be a word");
+    try {
+      settings.closeness = ParseClosenessTransform(item.second.as<std::string>());
+    } catch (const UserError& e) {
+      throw UserError(source + ": env.closeness: " + e.what());
+    }
+  }
+  return settings;
 }
 
 }  // namespace
@@ -48,34 +69,11 @@ std::string ObservationSettingsYaml(const ObservationSettings& settings) {
 
 ObservationSettings ParseObservationSettingsYaml(const std::string& text,
                                                  const std::string& source) {
-  const YAML::Node root = LoadYamlText(text, source);
-  if (!root.IsMap() || root.size() != 1 || !root["env"] || !root["env"].IsMap()) {
-    throw UserError(source + ": observation settings must be one map 'env:' (e.g. env: {" +
-                    kClosenessKey + ": log})");
-  }
-  ObservationSettings settings;
-  for (const auto& item : root["env"]) {
-    const std::string key = item.first.as<std::string>();
-    if (key != kClosenessKey) {
-      throw UserError(source + ": env." + key +
-                      " is not an observation setting (only env.closeness belongs here)");
-    }
-    if (!item.second.IsScalar()) throw UserError(source + ": env.closeness must be a word");
-    try {
-      settings.closeness = ParseClosenessTransform(item.second.as<std::string>());
-    } catch (const UserError& e) {
-      throw UserError(source + ": env.closeness: " + e.what());
-    }
-  }
-  return settings;
+  return SettingsFromYaml(LoadYamlText(text, source), source);
 }
 
 ObservationSettings LoadObservationSettingsFile(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  if (!file) throw UserError(path.string() + ": cannot read");
-  std::stringstream text;
-  text << file.rdbuf();
-  return ParseObservationSettingsYaml(text.str(), path.string());
+  return SettingsFromYaml(LoadYamlFile(path), path.string());
 }
 
 std::string ObservationLayoutText(const ObservationSettings& settings) {

@@ -9,6 +9,7 @@
 #include "eval/study/job_graph.h"
 #include "src/figures/gnuplot.h"
 #include "src/figures/style.h"
+#include "src/statistics.h"
 
 namespace colav {
 namespace {
@@ -32,10 +33,7 @@ std::vector<double> SeedMeans(const StudySpec& spec, const ScenarioSetResults& r
                               const std::string& config, const std::string& metric) {
   std::vector<double> means;
   for (int k = 0; k < spec.ppo_seeds; ++k) {
-    const std::vector<double>& values = results.models.at(SeedModelName(config, k)).at(metric);
-    double sum = 0.0;
-    for (const double value : values) sum += value;
-    means.push_back(values.empty() ? 0.0 : sum / static_cast<double>(values.size()));
+    means.push_back(Mean(results.models.at(SeedModelName(config, k)).at(metric)));
   }
   return means;
 }
