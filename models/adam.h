@@ -48,6 +48,8 @@ class Adam {
   /// tensors without an accumulation pass.
   void ZeroGrad();
 
+  /// The rate of the following steps (a schedule's); the moments are kept.
+  void set_learning_rate(double learning_rate) { options_.learning_rate = learning_rate; }
   std::int64_t step_count() const { return step_count_; }
   const std::vector<torch::Tensor>& exp_avg() const { return exp_avg_; }
   const std::vector<torch::Tensor>& exp_avg_sq() const { return exp_avg_sq_; }

@@ -152,6 +152,12 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Number(
           "ppo.learning_rate", [](Run & o) -> auto& { return o.ppo.adam.learning_rate; },
           "Adam learning rate", 0.0, 1.0)
+      .Coded("ppo.learning_rate_schedule",
+             [](Run & o) -> auto& { return o.ppo.learning_rate_schedule; },
+             "learning rate over the run: constant, or linear from ppo.learning_rate to 0 at "
+             "ppo.total_steps (set before each update, SB3's progress remaining)",
+             TextCodec<LearningRateSchedule>{LearningRateScheduleName, ParseLearningRateSchedule},
+             {"constant", "linear"})
       .Number(
           "ppo.adam_eps", [](Run & o) -> auto& { return o.ppo.adam.eps; }, "Adam epsilon", 0.0, 1.0)
       .Bool(

@@ -8,6 +8,7 @@
 #include "models/actor_critic.h"
 #include "models/adam.h"
 #include "src/options_binding.h"
+#include "train/ppo/learning_rate_schedule.h"
 #include "train/ppo/loss.h"
 
 namespace colav {
@@ -26,6 +27,8 @@ struct PpoOptions {
   bool timeouts_terminal = false;
   PpoLossOptions loss;
   AdamOptions adam;
+  /// How adam.learning_rate moves over the run.
+  LearningRateSchedule learning_rate_schedule = LearningRateSchedule::kConstant;
   std::int64_t checkpoint_interval = 30'000;  ///< steps between checkpoints
   bool keep_checkpoints = true;               ///< also keep checkpoints/policy_<step>.pt
   std::uint64_t seed = 0;

@@ -9,6 +9,7 @@
 #include "src/progress.h"
 #include "src/seeding.h"
 #include "src/threads/thread_pool.h"
+#include "train/ppo/learning_rate_schedule.h"
 #include "train/ppo/rollout.h"
 #include "train/ppo/update.h"
 
@@ -118,6 +119,9 @@ class PpoTrainer {
       if (!complete) break;  // stopped in the middle of the rollout
       const Clock::time_point update_start = Clock::now();
       buffer_.ComputeReturnsAndAdvantages(options_.gamma, options_.gae_lambda);
+      updater_.optimizer().set_learning_rate(
+          ScheduledLearningRate(options_.learning_rate_schedule, options_.adam.learning_rate,
+                                counters_.global_step, options_.total_steps));
       const UpdateStats stats = updater_.Update(buffer_, generator_);
       timing.update_s = SecondsSince(update_start);
       summary_.update_s += timing.update_s;
