@@ -2,6 +2,8 @@
 // figures themselves drawn from small constructed data.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "eval/beta_sweep_figure.h"
 #include "eval/rolling_statistics.h"
 #include "eval/training_curves.h"
@@ -72,11 +74,59 @@ TEST(TrainingCurves, DrawsSeveralRuns) {
                                          ReadTrainingRun("b", folder / "b.csv")};
   EXPECT_EQ(runs[1].collision.size(), 300U);
   EXPECT_DOUBLE_EQ(runs[0].global_step.back(), 240000.0);
-  PlotTrainingCurves(runs, 100, "test runs", folder / "curves.png");
+  PlotTrainingCurves({RollingCurve(runs[0], 100), RollingCurve(runs[1], 100)}, "test runs",
+                     "rolling mean and sd", folder / "curves.png");
   EXPECT_GT(std::filesystem::file_size(folder / "curves.png"), 10000U);
+  PlotTrainingCurves({SeedCurve(runs, 100, 50)}, "two seeds", "range over seeds",
+                     folder / "seeds.png");
+  EXPECT_GT(std::filesystem::file_size(folder / "seeds.png"), 10000U);
   WriteFile(folder / "empty.csv", "global_step,progress,mean_cte,steps,collision\n");
   EXPECT_EQ(UserErrorMessage([&] { ReadTrainingRun("e", folder / "empty.csv"); }),
             (folder / "empty.csv").string() + ": no finished episode yet");
+}
+
+// Hand-made runs: seed a ends episodes at steps 10, 20, 30, 40 with collisions 1, 1, 0, 0; seed b
+// at 15, 25, 35, 45, 55 with 0, 0, 0, 1, 1.
+TrainingRun HandRun(const std::string& label, std::vector<double> steps,
+                    std::vector<double> collisions) {
+  TrainingRun run{label, std::move(steps), {}, {}, {}, std::move(collisions)};
+  const std::size_t n = run.global_step.size();
+  run.progress.assign(n, 0.5);
+  run.cross_track_error.assign(n, 10.0);
+  run.duration.assign(n, 100.0);
+  return run;
+}
+
+TEST(TrainingCurves, RollingCurveShadesMeanMinusAndPlusSdNeverBelowZero) {
+  const TrainingCurve curve = RollingCurve(HandRun("a", {10, 20, 30}, {1, 0, 0}), 2);
+  ASSERT_EQ(curve.global_step, (std::vector<double>{10, 20, 30}));
+  const std::vector<CurvePoint>& collisions = curve.panels[3];
+  EXPECT_DOUBLE_EQ(collisions[1].mean, 0.5);
+  EXPECT_DOUBLE_EQ(collisions[1].high, 0.5 + std::sqrt(0.5));
+  EXPECT_DOUBLE_EQ(collisions[1].low, 0.0);  // 0.5 - 0.707 clipped
+  EXPECT_DOUBLE_EQ(collisions[2].mean, 0.0);
+  EXPECT_DOUBLE_EQ(collisions[2].high, 0.0);
+}
+
+TEST(TrainingCurves, SeedCurveAveragesTheSeedsRollingMeansOnACommonGrid) {
+  const std::vector<TrainingRun> seeds = {HandRun("cfg", {10, 20, 30, 40}, {1, 1, 0, 0}),
+                                          HandRun("other", {15, 25, 35, 45, 55}, {0, 0, 0, 1, 1})};
+  // Grid 0, 10, 20, 30, 40 (the last step both reached); window 2. At 0 and 10 seed b has no
+  // episode yet: left out.
+  const TrainingCurve curve = SeedCurve(seeds, 2, 5);
+  EXPECT_EQ(curve.label, "cfg");
+  ASSERT_EQ(curve.global_step, (std::vector<double>{20, 30, 40}));
+  const std::vector<CurvePoint>& collisions = curve.panels[3];
+  // At 20: a's rolling mean over {1, 1} = 1, b's over {0} = 0.
+  EXPECT_DOUBLE_EQ(collisions[0].mean, 0.5);
+  EXPECT_DOUBLE_EQ(collisions[0].low, 0.0);
+  EXPECT_DOUBLE_EQ(collisions[0].high, 1.0);
+  // At 30: a {1, 0} = 0.5, b {0, 0} = 0. At 40: a {0, 0} = 0, b {0, 0} = 0 (b's 45 is later).
+  EXPECT_DOUBLE_EQ(collisions[1].mean, 0.25);
+  EXPECT_DOUBLE_EQ(collisions[1].high, 0.5);
+  EXPECT_DOUBLE_EQ(collisions[2].mean, 0.0);
+  EXPECT_DOUBLE_EQ(curve.panels[1][2].mean, 10.0);  // constant cte
+  EXPECT_THROW(SeedCurve({}, 2, 5), std::invalid_argument);
 }
 
 TEST(BetaSweep, TableSortedByBetaAndFigure) {
