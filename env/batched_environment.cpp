@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
+#include <string>
 #include <thread>
 
 #include "env/environment.h"
@@ -53,7 +55,7 @@ BatchedEnvironment::BatchedEnvironment(
     const std::vector<std::shared_ptr<const ScenarioSource>>& sources)
     : num_envs_(num_envs),
       seed_(seed),
-      episode_counts_(num_envs, 0),
+      histories_(num_envs),
       pool_(std::make_unique<ThreadPool>(std::min(num_threads, num_envs))),
       observations_(static_cast<std::size_t>(num_envs) * kObservationSize, 0.0f),
       final_observations_(observations_.size(), 0.0f),
@@ -88,9 +90,9 @@ void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed) { Reset(seed, 
 void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed, const BatchedOutputs& outputs) {
   if (seed) {
     seed_ = *seed;
-    std::fill(episode_counts_.begin(), episode_counts_.end(), 0);
+    for (WorldHistory& history : histories_) history.episode = 0;
   } else if (started_) {
-    for (std::uint64_t& count : episode_counts_) ++count;
+    for (WorldHistory& history : histories_) ++history.episode;
   }
   started_ = true;
   pool_->ParallelFor(num_envs_, [this, &outputs](int i) {
@@ -124,6 +126,8 @@ void BatchedEnvironment::StepWorld(int world, const Action* action, const Batche
   float* observation = &outputs.observations[row];
   const double clipped[kActionSize] = {std::clamp<double>(action[0], -1.0, 1.0),
                                        std::clamp<double>(action[1], -1.0, 1.0)};
+  std::vector<double>& played = histories_[world].actions;
+  played.insert(played.end(), clipped, clipped + kActionSize);
   const StepResult result = worlds_[world]->Step(clipped, observation);
   outputs.rewards[world] = static_cast<float>(result.reward);
   outputs.terminated[world] = result.terminated;
@@ -131,9 +135,52 @@ void BatchedEnvironment::StepWorld(int world, const Action* action, const Batche
   finished_episodes_[world] = result.episode;
   if (result.terminated || result.truncated) {
     std::copy(observation, observation + kObservationSize, &outputs.final_observations[row]);
-    ++episode_counts_[world];
+    ++histories_[world].episode;
     StartEpisode(world, observation);
   }
+}
+
+void BatchedEnvironment::Restore(const std::vector<WorldHistory>& histories) {
+  if (static_cast<int>(histories.size()) != num_envs_) {
+    throw std::invalid_argument("histories of " + std::to_string(histories.size()) +
+                                " worlds for an environment of " + std::to_string(num_envs_));
+  }
+  started_ = true;
+  std::vector<std::string> errors(num_envs_);
+  pool_->ParallelFor(num_envs_, [&](int i) {
+    try {
+      ReplayWorld(i, histories[i]);
+    } catch (const std::invalid_argument& error) {
+      errors[i] = error.what();
+    }
+  });
+  for (const std::string& error : errors) {
+    if (!error.empty()) throw std::invalid_argument(error);
+  }
+}
+
+void BatchedEnvironment::ReplayWorld(int world, const WorldHistory& history) {
+  const std::vector<double>& actions = history.actions;
+  const bool valid = actions.size() % kActionSize == 0 &&
+                     std::all_of(actions.begin(), actions.end(),
+                                 [](double a) { return a >= -1.0 && a <= 1.0; });  // NaN fails
+  if (!valid) {
+    throw std::invalid_argument("world " + std::to_string(world) +
+                                ": recorded actions that no step applies");
+  }
+  float* observation = &observations_[static_cast<std::size_t>(world) * kObservationSize];
+  histories_[world].episode = history.episode;
+  StartEpisode(world, observation);
+  for (std::size_t k = 0; k < actions.size(); k += kActionSize) {
+    const StepResult result = worlds_[world]->Step(&actions[k], observation);
+    if (result.terminated || result.truncated) {
+      throw std::invalid_argument("world " + std::to_string(world) + ": its episode ends after " +
+                                  std::to_string(k / kActionSize + 1) + " of " +
+                                  std::to_string(actions.size() / kActionSize) +
+                                  " recorded actions");
+    }
+  }
+  histories_[world].actions = actions;
 }
 
 std::uint64_t BatchedEnvironment::EpisodeSeed(int world, std::uint64_t episode) const {
@@ -141,8 +188,9 @@ std::uint64_t BatchedEnvironment::EpisodeSeed(int world, std::uint64_t episode) 
 }
 
 void BatchedEnvironment::StartEpisode(int world, float* observation) {
+  histories_[world].actions.clear();
   if (!TakeNextEpisode(world, observation)) {
-    worlds_[world]->Reset(EpisodeSeed(world, episode_counts_[world]), observation);
+    worlds_[world]->Reset(EpisodeSeed(world, histories_[world].episode), observation);
   }
   PrepareNextEpisode(world);
 }
@@ -159,7 +207,7 @@ bool BatchedEnvironment::TakeNextEpisode(int world, float* observation) {
     state = next.state.load(std::memory_order_acquire);
   }
   next.state.store(NextEpisode::kEmpty, std::memory_order_relaxed);
-  if (state != NextEpisode::kReady || next.seed != EpisodeSeed(world, episode_counts_[world])) {
+  if (state != NextEpisode::kReady || next.seed != EpisodeSeed(world, histories_[world].episode)) {
     return false;  // none, or one of a seed given to Reset since
   }
   std::swap(worlds_[world], next.environment);
@@ -170,7 +218,7 @@ bool BatchedEnvironment::TakeNextEpisode(int world, float* observation) {
 void BatchedEnvironment::PrepareNextEpisode(int world) {
   if (pool_->num_threads() == 1) return;  // no worker to prepare it
   NextEpisode& next = *next_episodes_[world];
-  next.seed = EpisodeSeed(world, episode_counts_[world] + 1);
+  next.seed = EpisodeSeed(world, histories_[world].episode + 1);
   next.state.store(NextEpisode::kQueued, std::memory_order_release);
   pool_->RunWhenIdle([this, world] { BuildNextEpisode(world); });
 }

@@ -22,6 +22,14 @@ std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t e
 /// DeriveSeed(master_seed, "test-scenario", k). Every model meets the same worlds.
 std::uint64_t TestScenarioSeed(std::uint64_t master_seed, std::uint64_t k);
 
+/// What a world of a BatchedEnvironment has played since its episode started: enough to rebuild
+/// it bit for bit (BatchedEnvironment::Restore), since an episode is a pure function of its seed
+/// and the actions applied to it. A few kilobytes, where a copy of the world would be megabytes.
+struct WorldHistory {
+  std::uint64_t episode = 0;    ///< the episode's index in its world
+  std::vector<double> actions;  ///< kActionSize per step, as the world applied them (clipped)
+};
+
 /// Where a Reset or Step writes its results: num_envs rows each, in memory the caller owns (a
 /// Python binding's numpy arrays, say), so results need not be copied out.
 struct BatchedOutputs {
@@ -68,6 +76,15 @@ class BatchedEnvironment {
   void Step(const float* actions, const BatchedOutputs& outputs);
   void Step(const double* actions, const BatchedOutputs& outputs);
 
+  /// Every world's history, for a checkpoint.
+  const std::vector<WorldHistory>& histories() const { return histories_; }
+  /// Puts every world back where `histories` (one per world, from histories()) left it by
+  /// replaying its actions from the start of its episode; observations() then holds the worlds'
+  /// current observations. The other results of the last Step are not restored. Throws
+  /// std::invalid_argument if `histories` cannot come from this environment (another world count,
+  /// an action outside [-1, 1], an episode that ends during the replay).
+  void Restore(const std::vector<WorldHistory>& histories);
+
   // The results of the last Reset or Step that wrote to the environment's own buffers.
   const float* observations() const { return observations_.data(); }  ///< num_envs x 186
   const float* final_observations() const {
@@ -90,7 +107,7 @@ class BatchedEnvironment {
 
   BatchedOutputs OwnOutputs();
   std::uint64_t EpisodeSeed(int world, std::uint64_t episode) const;
-  /// Starts world `world`'s episode episode_counts_[world], writing its first observation.
+  /// Starts world `world`'s episode histories_[world].episode, writing its first observation.
   void StartEpisode(int world, float* observation);
   /// Swaps in the prepared next episode if it is that episode; false otherwise.
   bool TakeNextEpisode(int world, float* observation);
@@ -101,12 +118,13 @@ class BatchedEnvironment {
   void StepAll(const Action* actions, const BatchedOutputs& outputs);
   template <typename Action>
   void StepWorld(int world, const Action* action, const BatchedOutputs& outputs);
+  void ReplayWorld(int world, const WorldHistory& history);
 
   int num_envs_;
   std::uint64_t seed_;
   bool started_ = false;
   std::vector<std::unique_ptr<Environment>> worlds_;
-  std::vector<std::uint64_t> episode_counts_;
+  std::vector<WorldHistory> histories_;
   std::vector<std::unique_ptr<NextEpisode>> next_episodes_;
   std::unique_ptr<ThreadPool> pool_;  // after what its idle tasks use: destroyed first
   std::vector<float> observations_;

@@ -1,5 +1,7 @@
 #include "src/run_folder.h"
 
+#include <algorithm>
+#include <map>
 #include <system_error>
 #include <utility>
 
@@ -8,9 +10,32 @@
 #include "src/error.h"
 
 namespace colav {
+namespace {
+
+// Flattens a nested JSON object into dotted keys ("ppo.n_envs") and their values' text.
+void Flatten(const nlohmann::json& json, const std::string& prefix,
+             std::map<std::string, std::string>& flat) {
+  for (const auto& [key, value] : json.items()) {
+    if (value.is_object()) {
+      Flatten(value, prefix + key + ".", flat);
+    } else {
+      flat[prefix + key] = value.is_string() ? value.get<std::string>() : value.dump();
+    }
+  }
+}
+
+std::map<std::string, std::string> FlatValues(const Config& config) {
+  std::map<std::string, std::string> flat;
+  Flatten(config.ToJson(), "", flat);
+  return flat;
+}
+
+}  // namespace
 
 RunFolder::RunFolder(std::filesystem::path path, std::string program)
-    : path_(std::move(path)), program_(std::move(program)) {}
+    : path_(std::move(path)),
+      program_(std::move(program)),
+      lock_(std::make_shared<const RunLock>(path_, program_)) {}
 
 RunFolder RunFolder::Create(const std::filesystem::path& dir, const std::string& program) {
   std::error_code error;
@@ -24,6 +49,40 @@ RunFolder RunFolder::Create(const std::filesystem::path& dir, const std::string&
 
 std::filesystem::path RunFolder::DefaultPath(const std::string& name) {
   return std::filesystem::path("runs") / name;
+}
+
+void RunFolder::StartNewRun(const std::vector<std::string>& markers,
+                            const std::vector<std::string>& outputs, bool overwrite,
+                            const std::string& hint) const {
+  const auto marker = std::find_if(markers.begin(), markers.end(), [&](const std::string& name) {
+    return std::filesystem::exists(path_ / name);
+  });
+  if (!overwrite && marker != markers.end()) {
+    throw UserError(path_.string() + " holds a run (" + *marker + "): " + hint);
+  }
+  for (const std::string& output : outputs) std::filesystem::remove_all(path_ / output);
+}
+
+void RunFolder::RequireConfigUnchanged(const Config& config, const ConfigSchema& schema,
+                                       const std::vector<std::string>& free_keys) const {
+  const std::filesystem::path stored_path = path_ / "config.yaml";
+  if (!std::filesystem::is_regular_file(stored_path)) {
+    throw UserError(path_.string() + ": no config.yaml to continue the run with");
+  }
+  const std::map<std::string, std::string> stored =
+      FlatValues(Config::Load(schema, stored_path.string()));
+  const std::map<std::string, std::string> current = FlatValues(config);
+  const auto changed = std::find_if(current.begin(), current.end(), [&](const auto& entry) {
+    const bool free = std::find(free_keys.begin(), free_keys.end(), entry.first) != free_keys.end();
+    const auto original = stored.find(entry.first);
+    return !free && (original == stored.end() || original->second != entry.second);
+  });
+  if (changed == current.end()) return;
+  const auto original = stored.find(changed->first);
+  throw UserError(path_.string() + ": '" + changed->first + "' = " + changed->second +
+                  " differs from the run's " +
+                  (original == stored.end() ? "(none)" : original->second) + " (" +
+                  stored_path.string() + "); a run continues with its configuration");
 }
 
 void RunFolder::WriteResolvedConfig(const Config& config) const {

@@ -18,6 +18,57 @@ torch::Tensor ReadTensor(torch::serialize::InputArchive& archive, const std::str
   return tensor;
 }
 
+constexpr char kRolloutStartPrefix[] = "rollout_start/";
+
+torch::Tensor ActionsTensor(const std::vector<double>& actions) {
+  return torch::tensor(actions, torch::kFloat64);
+}
+
+void WriteRolloutStart(torch::serialize::OutputArchive& archive, const RolloutStart& start) {
+  const std::string prefix = kRolloutStartPrefix;
+  archive.write(prefix + "global_step", torch::tensor(start.counters.global_step));
+  archive.write(prefix + "episodes", torch::tensor(start.counters.episodes));
+  archive.write(prefix + "generator_state", start.generator_state);
+  std::vector<std::int64_t> episodes;
+  for (std::size_t i = 0; i < start.worlds.size(); ++i) {
+    episodes.push_back(static_cast<std::int64_t>(start.worlds[i].episode));
+    archive.write(prefix + "world_actions_" + std::to_string(i),
+                  ActionsTensor(start.worlds[i].actions));
+  }
+  archive.write(prefix + "world_episodes", torch::tensor(episodes, torch::kInt64));
+}
+
+// The rollout start recorded in `archive`, whose own counters are `counters`.
+RolloutStart ReadRolloutStart(torch::serialize::InputArchive& archive,
+                              const TrainingCounters& counters, const std::string& file) {
+  const std::string prefix = kRolloutStartPrefix;
+  torch::Tensor probe;
+  if (!archive.try_read(prefix + "world_episodes", probe)) {
+    throw UserError(file + " records no world states (an older train_ppo's): it cannot resume " +
+                    "exactly; start over with --overwrite");
+  }
+  RolloutStart start;
+  start.counters = counters;
+  start.counters.global_step = ReadTensor(archive, prefix + "global_step").item<std::int64_t>();
+  start.counters.episodes = ReadTensor(archive, prefix + "episodes").item<std::int64_t>();
+  start.generator_state = ReadTensor(archive, prefix + "generator_state");
+  const torch::Tensor episodes = probe.to(torch::kInt64).contiguous();
+  for (std::int64_t i = 0; i < episodes.numel(); ++i) {
+    const torch::Tensor actions = ReadTensor(archive, prefix + "world_actions_" + std::to_string(i))
+                                      .to(torch::kFloat64)
+                                      .contiguous();
+    start.worlds.push_back(
+        {static_cast<std::uint64_t>(episodes[i].item<std::int64_t>()),
+         {actions.data_ptr<double>(), actions.data_ptr<double>() + actions.numel()}});
+  }
+  const bool consistent =
+      start.counters.global_step >= 0 && start.counters.global_step <= counters.global_step &&
+      start.counters.episodes >= 0 && start.counters.episodes <= counters.episodes &&
+      (episodes >= 0).all().item<bool>();
+  if (!consistent) throw UserError(file + ": inconsistent counters (damaged?)");
+  return start;
+}
+
 }  // namespace
 
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir) {
@@ -26,8 +77,8 @@ std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir) {
 
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
-                    const TrainingCounters& counters, const ObservationSettings& settings,
-                    bool keep_policy_copy) {
+                    const TrainingCounters& counters, const RolloutStart& rollout_start,
+                    const ObservationSettings& settings, bool keep_policy_copy) {
   ExportPolicy(model, counters.global_step, settings, run_dir / "policy.pt");
   if (keep_policy_copy) {
     ExportPolicy(
@@ -47,17 +98,18 @@ void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model
   archive.write("rollouts", torch::tensor(counters.rollouts));
   archive.write("episodes", torch::tensor(counters.episodes));
   archive.write("wall_s", torch::tensor(counters.wall_s, torch::kFloat64));
+  WriteRolloutStart(archive, rollout_start);
   WriteFileAtomically(TrainingStatePath(run_dir), [&](const std::filesystem::path& temporary) {
     archive.save_to(temporary.string());
   });
 }
 
-TrainingCounters LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                                Adam& optimizer, torch::Generator& generator) {
+RolloutStart LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
+                            Adam& optimizer) {
   const std::filesystem::path path = TrainingStatePath(run_dir);
   const std::string file = "training state '" + path.string() + "'";
   if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
-  TrainingCounters counters;
+  RolloutStart start;
   try {
     torch::serialize::InputArchive archive;
     archive.load_from(path.string());
@@ -73,19 +125,20 @@ TrainingCounters LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriti
     torch::serialize::InputArchive optimizer_archive;
     archive.read("optimizer", optimizer_archive);
     optimizer.Load(optimizer_archive);
-    generator.set_state(ReadTensor(archive, "generator_state"));
+    TrainingCounters counters;
     counters.global_step = ReadTensor(archive, "global_step").item<std::int64_t>();
     counters.n_updates = ReadTensor(archive, "n_updates").item<std::int64_t>();
     counters.rollouts = ReadTensor(archive, "rollouts").item<std::int64_t>();
     counters.episodes = ReadTensor(archive, "episodes").item<std::int64_t>();
     counters.wall_s = ReadTensor(archive, "wall_s").item<double>();
+    start = ReadRolloutStart(archive, counters, file);
   } catch (const UserError&) {
     throw;
   } catch (const std::exception& error) {
     const std::string reason = error.what();
     throw UserError(file + " cannot be read: " + reason.substr(0, reason.find('\n')));
   }
-  return counters;
+  return start;
 }
 
 }  // namespace colav

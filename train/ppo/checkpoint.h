@@ -3,8 +3,11 @@
 // the counters), and optionally RUN/checkpoints/policy_<step>.pt; each file is written
 // atomically, so an interrupted save leaves the previous checkpoint intact.
 //
-// The worlds' states are not saved: a resumed run starts new episodes (from a seed derived from
-// the step count), as an SB3 agent reloaded from a checkpoint does.
+// A checkpoint can fall inside a rollout (every checkpoint_interval steps, or on SIGKILL the last
+// one). The weights and the Adam state do not change within a rollout, so the state file also
+// records the start of the rollout in progress (RolloutStart: counters, sampling generator, the
+// worlds' histories); a resumed run replays that rollout and so ends bit for bit where an
+// uninterrupted run does.
 #pragma once
 
 #include <torch/torch.h>
@@ -12,6 +15,7 @@
 #include <cstdint>
 #include <filesystem>
 
+#include "env/batched_environment.h"
 #include "env/observation_settings.h"
 #include "models/actor_critic.h"
 #include "models/adam.h"
@@ -26,18 +30,27 @@ struct TrainingCounters {
   double wall_s = 0.0;  ///< training wall time, summed over resumed sessions
 };
 
+/// Where a resumed run starts: the start of the rollout in progress at the checkpoint (the end
+/// of the last one when the checkpoint falls between rollouts).
+struct RolloutStart {
+  TrainingCounters counters;         ///< wall_s: the training time up to the checkpoint
+  torch::Tensor generator_state;     ///< before the rollout's sampling noise was drawn
+  std::vector<WorldHistory> worlds;  ///< one per world
+};
+
 /// Path of the training state in a run folder.
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir);
 
 /// `settings` are the observation settings the policy is trained with (recorded in policy.pt).
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
-                    const TrainingCounters& counters, const ObservationSettings& settings,
-                    bool keep_policy_copy);
+                    const TrainingCounters& counters, const RolloutStart& rollout_start,
+                    const ObservationSettings& settings, bool keep_policy_copy);
 
-/// Restores the weights, optimiser and generator in place. A missing state file, or one that does
-/// not fit `model`, is a UserError naming it.
-TrainingCounters LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
-                                Adam& optimizer, torch::Generator& generator);
+/// Restores the weights and optimiser in place and returns where the run resumes. A missing,
+/// truncated or inconsistent state file, or one that does not fit `model`, is a UserError naming
+/// it; so is one from before the worlds were saved, which cannot resume exactly.
+RolloutStart LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
+                            Adam& optimizer);
 
 }  // namespace colav

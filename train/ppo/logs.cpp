@@ -1,5 +1,7 @@
 #include "train/ppo/logs.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -28,21 +30,56 @@ std::vector<std::string> SplitCsv(const std::string& line) {
 
 std::size_t FieldCount(const std::string& header) { return SplitCsv(header).size(); }
 
-// Keeps the header and the complete rows of `path` whose global_step is at most `step`; returns
-// the kept rows.
-std::vector<std::vector<std::string>> TruncateAfter(const std::filesystem::path& path,
-                                                    const std::string& header, std::int64_t step) {
-  std::vector<std::vector<std::string>> kept;
+// A field of a log row: a number, written in full (NaN included: explained_variance is NaN for a
+// rollout whose returns are all equal).
+bool IsNumber(const std::string& field) {
+  char* end = nullptr;
+  std::strtod(field.c_str(), &end);
+  return !field.empty() && end == field.c_str() + field.size();
+}
+
+// The fields of row `number` of the log `file`: numbers under `header`, the first an integer
+// global step from `previous_step` to `last_step`. A UserError naming the row otherwise.
+std::vector<std::string> ParseRow(const std::string& line, const std::string& header,
+                                  std::int64_t previous_step, std::int64_t last_step,
+                                  const std::string& file, std::size_t number) {
+  std::vector<std::string> fields = SplitCsv(line);
+  const std::string row = file + ": row " + std::to_string(number);
+  if (fields.size() != FieldCount(header) || !std::all_of(fields.begin(), fields.end(), IsNumber)) {
+    throw UserError(row + " is not a row of numbers under " + header);
+  }
+  char* end = nullptr;
+  const long long step = std::strtoll(fields[0].c_str(), &end, 10);
+  if (*end != '\0' || step < previous_step || step > last_step) {
+    throw UserError(row + " has global_step " + fields[0] + " (expected " +
+                    std::to_string(previous_step) + " to " + std::to_string(last_step) + ")");
+  }
+  return fields;
+}
+
+// Keeps the header and the first `rows` rows of `path`, which must be complete rows of numbers
+// with non-decreasing global steps up to `last_step` (rows after them may be torn: a run killed
+// while writing); returns the kept rows.
+std::vector<std::vector<std::string>> KeepRows(const std::filesystem::path& path,
+                                               const std::string& header, std::int64_t rows,
+                                               std::int64_t last_step) {
+  const std::string file = path.string();
   std::ifstream in(path);
   std::string line;
+  if (!std::getline(in, line) || line != header) {
+    throw UserError(file + ": not a train_ppo log (header expected: " + header + ")");
+  }
+  std::vector<std::vector<std::string>> kept;
   std::string content = header + "\n";
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::vector<std::string> fields = SplitCsv(line);
-    if (fields.size() != FieldCount(header) || in.eof()) break;  // a torn last line
-    if (std::stoll(fields[0]) > step) break;
-    content += line + "\n";
-    kept.push_back(std::move(fields));
+  std::int64_t previous_step = 0;
+  while (static_cast<std::int64_t>(kept.size()) < rows && std::getline(in, line) && !in.eof()) {
+    kept.push_back(ParseRow(line, header, previous_step, last_step, file, kept.size() + 1));
+    previous_step = std::stoll(kept.back()[0]);
+    content.append(line).append("\n");
+  }
+  if (static_cast<std::int64_t>(kept.size()) < rows) {
+    throw UserError(file + " ends after " + std::to_string(kept.size()) +
+                    " complete rows; the checkpoint continues from row " + std::to_string(rows));
   }
   WriteTextFileAtomically(path, content);
   return kept;
@@ -60,17 +97,16 @@ std::ofstream OpenForAppend(const std::filesystem::path& path, const std::string
 }  // namespace
 
 TrainingLogs::TrainingLogs(const std::filesystem::path& run_dir,
-                           std::optional<std::int64_t> resume_step) {
+                           std::optional<KeptLogRows> resume) {
   const std::filesystem::path episodes = run_dir / "episodes.csv";
   const std::filesystem::path updates = run_dir / "updates.csv";
-  if (resume_step) {
-    if (std::filesystem::exists(episodes)) {
-      for (const auto& row : TruncateAfter(episodes, kEpisodesHeader, *resume_step)) {
-        Remember({std::stod(row[3]), std::stod(row[4]), std::stod(row[5]), std::stod(row[6]),
-                  row[7] == "1", row[8] == "1"});
-      }
+  if (resume) {
+    for (const auto& row :
+         KeepRows(episodes, kEpisodesHeader, resume->episodes, resume->last_step)) {
+      Remember({std::stod(row[3]), std::stod(row[4]), std::stod(row[5]), std::stod(row[6]),
+                row[7] == "1", row[8] == "1"});
     }
-    if (std::filesystem::exists(updates)) TruncateAfter(updates, kUpdatesHeader, *resume_step);
+    KeepRows(updates, kUpdatesHeader, resume->updates, resume->last_step);
   } else {
     std::filesystem::remove(episodes);
     std::filesystem::remove(updates);

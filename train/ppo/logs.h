@@ -2,8 +2,9 @@
 // (one row per PPO update, with Stable-Baselines3's metric names), plus the rolling statistics of
 // the last 100 episodes shown by the progress display.
 //
-// Rows are appended as they come and flushed at every checkpoint; a resumed run first drops the
-// rows written after its checkpoint (and any torn last line), since it replays those steps.
+// Rows are appended as they come and flushed at every checkpoint; a resumed run keeps the rows
+// written before its checkpoint's rollout start and drops the rest (and any torn last line), since
+// it replays those steps. The rows it keeps are checked: a damaged file is a UserError naming it.
 #pragma once
 
 #include <cstdint>
@@ -35,10 +36,17 @@ struct IterationTiming {
   double update_s = 0.0;
 };
 
+/// The rows a resumed run keeps: those its checkpoint's rollout start had written.
+struct KeptLogRows {
+  std::int64_t episodes = 0;   ///< rows of episodes.csv
+  std::int64_t updates = 0;    ///< rows of updates.csv
+  std::int64_t last_step = 0;  ///< no kept row is of a later global_step
+};
+
 class TrainingLogs {
  public:
-  /// Opens (creating) the CSVs in run_dir; with resume_step, drops rows after that step first.
-  TrainingLogs(const std::filesystem::path& run_dir, std::optional<std::int64_t> resume_step);
+  /// Opens the CSVs in run_dir: new ones, or with `resume`, the kept rows of the existing ones.
+  TrainingLogs(const std::filesystem::path& run_dir, std::optional<KeptLogRows> resume);
 
   void AddEpisode(std::int64_t global_step, const FinishedEpisode& episode);
   void AddUpdate(std::int64_t global_step, const UpdateStats& stats, const IterationTiming& timing);

@@ -20,7 +20,6 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, 
     : env_seed_(env_seed),
       timeouts_terminal_(timeouts_terminal),
       env_(config, n_envs, threads, env_seed),
-      episode_counts_(n_envs, 0),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
       clipped_actions_(mean_.size()),
       scratch_values_(n_envs),
@@ -68,7 +67,9 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
       buffer.bootstrapped(t)[e] = BootstrapsFromFinalObservation(
           env_.terminated()[e] != 0, env_.truncated()[e] != 0, timeouts_terminal_);
       if (const auto& episode = env_.finished_episodes()[e]) {
-        finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, episode_counts_[e]++), *episode});
+        // The world has moved on to its next episode already.
+        const std::uint64_t index = env_.histories()[e].episode - 1;
+        finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, index), *episode});
       }
     }
     ValueFinalObservations(policy, t, buffer);

@@ -49,6 +49,11 @@ class RolloutCollector {
   bool Collect(FastActorCritic& policy, const torch::Tensor& noise, RolloutBuffer& buffer,
                const StepCallback& after_step);
 
+  /// What each world has played since its episode started (a checkpoint's record of the worlds).
+  const std::vector<WorldHistory>& world_histories() const { return env_.histories(); }
+  /// Puts the worlds back where world_histories() left them (BatchedEnvironment::Restore).
+  void RestoreWorlds(const std::vector<WorldHistory>& histories) { env_.Restore(histories); }
+
   /// Wall time spent stepping the worlds so far (s).
   double env_seconds() const { return env_seconds_; }
 
@@ -58,7 +63,6 @@ class RolloutCollector {
   std::uint64_t env_seed_;
   bool timeouts_terminal_;
   BatchedEnvironment env_;
-  std::vector<std::uint64_t> episode_counts_;
   std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
   std::vector<FinishedEpisode> finished_;
   double env_seconds_ = 0.0;

@@ -6,6 +6,7 @@
 
 #include "src/atomic_file.h"
 #include "src/cli.h"
+#include "src/error.h"
 #include "src/progress.h"
 #include "src/seeding.h"
 #include "src/threads/thread_pool.h"
@@ -63,15 +64,16 @@ class PpoTrainer {
         model_(ModelOptions(options.model, resume)),
         updater_(model_, options_),
         generator_(at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(options_.seed, "ppo"))),
-        counters_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_)
-                         : TrainingCounters{}),
+        rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
+                              : RolloutStart{}),
+        counters_(rollout_start_.counters),
         collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
-                   // A resumed session plays new scenarios, reproducibly.
-                   DeriveSeed(options_.seed, "worlds", counters_.global_step),
-                   options_.timeouts_terminal),
-        logs_(run_dir_, resume ? std::optional<std::int64_t>(counters_.global_step) : std::nullopt),
+                   DeriveSeed(options_.seed, "worlds", 0), options_.timeouts_terminal),
+        logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
+                               : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs) {
     updater_.set_n_updates(counters_.n_updates);
+    if (resume) ContinueFromRolloutStart();
   }
 
   PpoRunSummary Run() {
@@ -83,17 +85,20 @@ class PpoTrainer {
     ProgressBar progress("train_ppo", options_.total_steps, "steps", progress_options);
     std::int64_t next_checkpoint =
         (counters_.global_step / options_.checkpoint_interval + 1) * options_.checkpoint_interval;
-    const auto checkpoint = [&] {
+    const auto checkpoint = [&](bool keep_policy_copy) {
       const Clock::time_point checkpoint_start = Clock::now();
       counters_.wall_s = previous_wall_s + SecondsSince(start);
       logs_.Flush();
-      SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_,
-                     observation_settings_, options_.keep_checkpoints);
+      SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_, rollout_start_,
+                     observation_settings_, keep_policy_copy);
       summary_.checkpoint_s += SecondsSince(checkpoint_start);
     };
     const StopFlag stop_flag;
     bool stopped = false;
+    bool within_rollout = false;
     while (counters_.global_step < options_.total_steps && !stopped) {
+      MarkRolloutStart();
+      within_rollout = true;
       const Clock::time_point rollout_start = Clock::now();
       const torch::Tensor noise =
           torch::randn({options_.n_steps, options_.n_envs, kActionSize}, generator_);
@@ -108,7 +113,7 @@ class PpoTrainer {
                                                        ? ProgressMetrics{}
                                                        : ProgressMetricsOf(logs_.Rolling()));
             while (counters_.global_step >= next_checkpoint) {
-              checkpoint();
+              checkpoint(options_.keep_checkpoints);
               next_checkpoint += options_.checkpoint_interval;
             }
             return !StopFlag::StopRequested();
@@ -123,6 +128,7 @@ class PpoTrainer {
           ScheduledLearningRate(options_.learning_rate_schedule, options_.adam.learning_rate,
                                 counters_.global_step, options_.total_steps));
       const UpdateStats stats = updater_.Update(buffer_, generator_);
+      within_rollout = false;
       timing.update_s = SecondsSince(update_start);
       summary_.update_s += timing.update_s;
       ++counters_.rollouts;
@@ -131,7 +137,10 @@ class PpoTrainer {
       logs_.AddUpdate(counters_.global_step, stats, timing);
       stopped = StopFlag::StopRequested();
     }
-    checkpoint();
+    if (!within_rollout) MarkRolloutStart();
+    // A stopped run's checkpoint is only the resume point: the uninterrupted run has no copy of it.
+    const bool finished = counters_.global_step >= options_.total_steps;
+    checkpoint(options_.keep_checkpoints && finished);
     progress.Finish();
 
     summary_.counters = counters_;
@@ -139,7 +148,7 @@ class PpoTrainer {
     summary_.wall_s = SecondsSince(start);
     summary_.steps_per_s = summary_.session_steps / summary_.wall_s;
     summary_.env_s = collector_.env_seconds();
-    summary_.finished = counters_.global_step >= options_.total_steps;
+    summary_.finished = finished;
     summary_.rolling = logs_.Rolling();
     WriteTextFileAtomically(run_dir_ / "summary.json",
                             SummaryJson(resolved_config_, summary_).dump(2) + "\n");
@@ -147,6 +156,30 @@ class PpoTrainer {
   }
 
  private:
+  static KeptLogRows KeptRows(const TrainingCounters& counters) {
+    return {counters.episodes, counters.rollouts, counters.global_step};
+  }
+
+  // Resuming: the sampling generator and the worlds as they were when the rollout in progress at
+  // the checkpoint started (LoadCheckpoint restored the weights and the optimiser).
+  void ContinueFromRolloutStart() {
+    generator_.set_state(rollout_start_.generator_state);
+    try {
+      collector_.RestoreWorlds(rollout_start_.worlds);
+    } catch (const std::invalid_argument& error) {
+      throw UserError("training state '" + TrainingStatePath(run_dir_).string() +
+                      "' does not fit the configured worlds: " + error.what());
+    }
+  }
+
+  // Everything a resumed run needs besides the weights and optimiser, which do not change until
+  // the rollout's update.
+  void MarkRolloutStart() {
+    rollout_start_.counters = counters_;
+    rollout_start_.generator_state = generator_.get_state();
+    rollout_start_.worlds = collector_.world_histories();
+  }
+
   static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {
     if (resume) options.extractor.encoder.clear();  // the weights come from the checkpoint
     return options;
@@ -159,6 +192,7 @@ class PpoTrainer {
   ActorCritic model_;
   PpoUpdater updater_;
   torch::Generator generator_;
+  RolloutStart rollout_start_;  ///< of the rollout in progress, or the next one between rollouts
   TrainingCounters counters_;
   RolloutCollector collector_;
   TrainingLogs logs_;
@@ -170,7 +204,16 @@ class PpoTrainer {
 
 PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
                        const std::filesystem::path& run_dir, bool resume) {
-  PpoTrainer trainer(options, resolved_config, run_dir, resume);
+  PpoTrainer trainer(options, resolved_config, run_dir, resume);  // checks what it resumes
+  // The baseline has no pre-trained encoder to lock: it always trains.
+  const FeatureExtractorOptions& extractor = options.model.extractor;
+  const std::string training_mode = extractor.kind == ExtractorKind::kBaseline
+                                        ? "trained from scratch"
+                                    : extractor.locked ? "locked"
+                                                       : "unlocked";
+  spdlog::info("{} {} steps (extractor {}, {}) in {}", resume ? "resuming" : "training",
+               options.ppo.total_steps, ExtractorKindName(extractor.kind), training_mode,
+               run_dir.string());
   return trainer.Run();
 }
 

@@ -1,8 +1,10 @@
 // PPO training of the collision-avoidance agent (spec README "PPO agent"; Stable-Baselines3
 // semantics, reference-learning 6.3-6.5): rollouts of n_steps x n_envs from the batched
 // environment, GAE, n_epochs of minibatch updates, checkpoints every checkpoint_interval steps and
-// at the end, logs and a summary in the run folder. SIGINT / SIGTERM checkpoint and stop cleanly;
-// a NaN or Inf stops training with TrainingDiverged, keeping the last good checkpoint.
+// at the end, logs and a summary in the run folder. SIGINT / SIGTERM abandon the rollout in
+// progress, write the state to resume from (checkpoint.h) and stop; a resumed run replays that
+// rollout and ends bit for bit as an uninterrupted one. A NaN or Inf stops training with
+// TrainingDiverged, keeping the last good checkpoint.
 #pragma once
 
 #include <cstdint>
@@ -30,7 +32,8 @@ struct PpoRunSummary {
 
 /// Trains the agent configured by `options` in run_dir, from scratch or resuming from its
 /// checkpoint, and writes run_dir/summary.json, which records `resolved_config` (Config::ToJson of
-/// the configuration the options were read from). LibTorch's intra-op thread count is the caller's
+/// the configuration the options were read from). Logs what it starts once the files it resumes
+/// have been checked (a UserError otherwise). LibTorch's intra-op thread count is the caller's
 /// to set (train_ppo runs one).
 PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
                        const std::filesystem::path& run_dir, bool resume);

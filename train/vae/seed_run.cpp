@@ -7,7 +7,6 @@
 #include "models/torchscript_export.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
-#include "src/error.h"
 #include "src/progress.h"
 #include "src/seeding.h"
 #include "train/vae/checkpoint.h"
@@ -89,8 +88,8 @@ SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, st
     WriteTextFileAtomically(seed_dir / "losses.csv", LossesCsv(progress.history));
     SaveVaeCheckpoint(checkpoint, signature, trainer.model(), trainer.optimizer(), progress);
     if (StopFlag::StopRequested()) {
-      throw UserError("stopped after epoch " + std::to_string(epoch) + "; checkpoint " +
-                      checkpoint.string() + " (run the same command to resume)");
+      throw TrainingStopped("stopped after epoch " + std::to_string(epoch) + "; checkpoint " +
+                            checkpoint.string() + " (run the same command to resume)");
     }
   }
   bar.Finish();

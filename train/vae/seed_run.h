@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 
 #include "models/conv_vae.h"
@@ -21,8 +22,15 @@ std::uint64_t VaeRunSeed(const VaeTrainingOptions& options, std::int64_t index);
 /// The settings a checkpoint or result must share to be resumed or reused.
 std::string VaeRunSignature(const VaeTrainingOptions& options, std::int64_t index);
 
+/// SIGINT or SIGTERM stopped the run after an epoch, whose checkpoint the same command resumes
+/// from (the message says where).
+class TrainingStopped : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 /// Trains, exports and tests seed `index` in `seed_dir` (or reuses its finished result). Throws a
-/// UserError when a stop was requested (Ctrl-C) after saving the checkpoint.
+/// TrainingStopped when a stop was requested (Ctrl-C) after saving the checkpoint.
 SeedResult RunVaeSeed(const VaeData& data, const VaeTrainingOptions& options, std::int64_t index,
                       const std::filesystem::path& seed_dir);
 

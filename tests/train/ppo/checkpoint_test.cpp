@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
+#include <iterator>
+#include <string>
 
+#include "src/atomic_file.h"
 #include "src/error.h"
 #include "tests/src/test_util.h"
 #include "train/ppo/config.h"
@@ -30,9 +33,13 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
     updater.optimizer().Step(gradients);
   }
   auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
+  RolloutStart start;
+  start.counters = {28672, 12, 3, 15, 0.0};
+  start.generator_state = generator.get_state();
+  start.worlds = {{4, {0.5, -1.0, 1.0, 0.25}}, {7, {}}};
   torch::randn({10}, generator);
   const TrainingCounters counters{30000, 12, 3, 17, 42.5};
-  SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters,
+  SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters, start,
                  ObservationSettings{}, true);
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "policy.pt"));
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "checkpoints" / "policy_30000.pt"));
@@ -40,14 +47,19 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   model_options.seed = 2;
   ActorCritic restored(model_options);
   PpoUpdater restored_updater(restored, options);
-  auto restored_generator = at::make_generator<at::CPUGeneratorImpl>(6);
-  const TrainingCounters loaded =
-      LoadCheckpoint(directory.path(), *restored, restored_updater.optimizer(), restored_generator);
-  EXPECT_EQ(loaded.global_step, 30000);
-  EXPECT_EQ(loaded.n_updates, 12);
-  EXPECT_EQ(loaded.rollouts, 3);
-  EXPECT_EQ(loaded.episodes, 17);
-  EXPECT_DOUBLE_EQ(loaded.wall_s, 42.5);
+  const RolloutStart loaded =
+      LoadCheckpoint(directory.path(), *restored, restored_updater.optimizer());
+  // The run resumes at the start of the rollout in progress, with the training time so far.
+  EXPECT_EQ(loaded.counters.global_step, 28672);
+  EXPECT_EQ(loaded.counters.n_updates, 12);
+  EXPECT_EQ(loaded.counters.rollouts, 3);
+  EXPECT_EQ(loaded.counters.episodes, 15);
+  EXPECT_DOUBLE_EQ(loaded.counters.wall_s, 42.5);
+  ASSERT_EQ(loaded.worlds.size(), 2U);
+  EXPECT_EQ(loaded.worlds[0].episode, 4U);
+  EXPECT_EQ(loaded.worlds[0].actions, start.worlds[0].actions);
+  EXPECT_EQ(loaded.worlds[1].episode, 7U);
+  EXPECT_TRUE(loaded.worlds[1].actions.empty());
   const auto original = model->parameters(), copy = restored->parameters();
   for (std::size_t i = 0; i < original.size(); ++i) EXPECT_TRUE(torch::equal(original[i], copy[i]));
   EXPECT_EQ(restored_updater.optimizer().step_count(), 3);
@@ -57,15 +69,33 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
     EXPECT_TRUE(torch::equal(updater.optimizer().exp_avg_sq()[i],
                              restored_updater.optimizer().exp_avg_sq()[i]));
   }
-  EXPECT_TRUE(torch::equal(torch::randn({4}, generator), torch::randn({4}, restored_generator)));
+  auto restored_generator = at::make_generator<at::CPUGeneratorImpl>(6);
+  restored_generator.set_state(loaded.generator_state);
+  auto start_generator = at::make_generator<at::CPUGeneratorImpl>(6);
+  start_generator.set_state(start.generator_state);
+  EXPECT_TRUE(
+      torch::equal(torch::randn({4}, start_generator), torch::randn({4}, restored_generator)));
+}
+
+TEST(PpoCheckpointTest, TruncatedStateIsAUserError) {
+  testing_util::TemporaryFolder directory;
+  ActorCritic model(ActorCriticOptions{});
+  PpoUpdater updater(model, PpoOptions{});
+  auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
+  RolloutStart start;
+  start.generator_state = generator.get_state();
+  SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, TrainingCounters{},
+                 start, ObservationSettings{}, false);
+  const std::filesystem::path state = TrainingStatePath(directory.path());
+  std::filesystem::resize_file(state, std::filesystem::file_size(state) / 2);
+  EXPECT_THROW(LoadCheckpoint(directory.path(), *model, updater.optimizer()), UserError);
 }
 
 TEST(PpoCheckpointTest, MissingStateIsAUserError) {
   testing_util::TemporaryFolder directory;
   ActorCritic model(ActorCriticOptions{});
   Adam optimizer(model->TrainableParameters(), AdamOptions{});
-  auto generator = at::make_generator<at::CPUGeneratorImpl>(5);
-  EXPECT_THROW(LoadCheckpoint(directory.path(), *model, optimizer, generator), UserError);
+  EXPECT_THROW(LoadCheckpoint(directory.path(), *model, optimizer), UserError);
 }
 
 Config TinyRun(std::int64_t total_steps) {
@@ -115,9 +145,63 @@ TEST(PpoCheckpointTest, ResumedRunContinuesFromTheCheckpointStep) {
 
   ActorCritic model(PpoRunBinding().Read(TinyRun(128)).model);
   Adam optimizer(model->TrainableParameters(), AdamOptions{});
-  auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
-  LoadCheckpoint(directory.path(), *model, optimizer, generator);
+  LoadCheckpoint(directory.path(), *model, optimizer);
   EXPECT_EQ(optimizer.step_count(), 4 * 32 / 8);  // 4 rollouts of 32 samples, batches of 8
+}
+
+std::string ReadFile(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// Episodes finish across the resume (max_steps 20, rollouts of 16 steps per world), so the worlds
+// are restored mid-episode.
+Config ShortEpisodes(std::int64_t total_steps) {
+  Config config = TinyRun(total_steps);
+  config.Set("env.max_steps", "20", "test");
+  return config;
+}
+
+TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const std::filesystem::path whole = directory.path() / "whole";
+  const std::filesystem::path pieces = directory.path() / "pieces";
+  std::filesystem::create_directories(whole);
+  std::filesystem::create_directories(pieces);
+  Train(ShortEpisodes(160), whole, /*resume=*/false);
+  Train(ShortEpisodes(64), pieces, /*resume=*/false);
+  Train(ShortEpisodes(160), pieces, /*resume=*/true);
+  EXPECT_GT(CountLines(whole / "episodes.csv"), 5U);
+  EXPECT_EQ(ReadFile(whole / "episodes.csv"), ReadFile(pieces / "episodes.csv"));
+  EXPECT_EQ(ReadFile(whole / "policy.pt"), ReadFile(pieces / "policy.pt"));
+}
+
+TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogWithGarbageRows) {
+  testing_util::TemporaryFolder directory;
+  Train(ShortEpisodes(64), directory.path(), /*resume=*/false);
+  std::string episodes = ReadFile(directory.path() / "episodes.csv");
+  episodes.replace(episodes.find('\n') + 1, 5, "x#@!,");
+  WriteTextFileAtomically(directory.path() / "episodes.csv", episodes);
+  EXPECT_THROW(Train(ShortEpisodes(128), directory.path(), /*resume=*/true), UserError);
+}
+
+TEST(PpoCheckpointTest, ResumeAcceptsTheNanExplainedVarianceOfAnUpdate) {
+  testing_util::TemporaryFolder directory;
+  Train(ShortEpisodes(64), directory.path(), /*resume=*/false);
+  std::string updates = ReadFile(directory.path() / "updates.csv");
+  std::size_t field = updates.find('\n');  // explained_variance: the 9th field of the first row
+  for (int i = 0; i < 8; ++i) field = updates.find(',', field + 1);
+  updates.replace(field + 1, updates.find(',', field + 1) - field - 1, "nan");
+  WriteTextFileAtomically(directory.path() / "updates.csv", updates);
+  EXPECT_NO_THROW(Train(ShortEpisodes(128), directory.path(), /*resume=*/true));
+}
+
+TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogMissingRows) {
+  testing_util::TemporaryFolder directory;
+  Train(ShortEpisodes(64), directory.path(), /*resume=*/false);
+  WriteTextFileAtomically(directory.path() / "episodes.csv",
+                          ReadFile(directory.path() / "episodes.csv").substr(0, 120));
+  EXPECT_THROW(Train(ShortEpisodes(128), directory.path(), /*resume=*/true), UserError);
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "src/cli.h"
+#include "src/finished_output.h"
 #include "src/output_path.h"
 #include "src/progress.h"
 #include "train/dataset/config.h"
@@ -41,7 +42,9 @@ int GenerateDataset(int argc, char** argv) {
       "Datasets: ranges [N,180] (m, 150 = no return), group, source_scan, shift, split;\n"
       "attributes config, seed, description."};
   std::string out_path;
+  bool overwrite = false;
   app.add_option("--out", out_path, "dataset file to write (HDF5)")->required();
+  app.add_flag("--overwrite", overwrite, "replace an existing dataset file");
   const OptionsBinding<DatasetGenerationOptions> binding = DatasetGenerationBinding();
   ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--sim-scans", "dataset.sim_scans");
@@ -52,6 +55,7 @@ int GenerateDataset(int argc, char** argv) {
   const Config config = config_flags.Resolve();
   const DatasetGenerationOptions options = binding.Read(config);
   RequireWritableFile(out_path, "--out");
+  RefuseToReplaceFinishedOutput({out_path}, "--out", overwrite);
 
   const auto start = std::chrono::steady_clock::now();
   ProgressBar progress("scans", options.sim_scans + options.synthetic_scans, "scans");

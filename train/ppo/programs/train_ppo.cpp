@@ -23,6 +23,10 @@
 
 namespace {
 
+// What a run writes besides its configuration and log: removed when a new run starts in a folder.
+const std::vector<std::string> kRunOutputs = {"policy.pt",    "training_state.pt", "checkpoints",
+                                              "episodes.csv", "updates.csv",       "summary.json"};
+
 // A resumed run reads its configuration from RUN_DIR/config.yaml unless --config says otherwise:
 // inserts "--config RUN_DIR/config.yaml" after the program name.
 std::vector<std::string> WithRunConfig(int argc, char** argv) {
@@ -55,10 +59,20 @@ int Main(int argc, char** argv) {
   config_flags.AddFlag("--seed", "train.seed");
   std::string out;
   std::string resume;
+  bool overwrite = false;
   bool verbose = false;
   app.add_option("--out", out, "run folder (created)")->type_name("RUN_DIR");
   app.add_option("--resume", resume, "continue the run in RUN_DIR from its last checkpoint")
       ->type_name("RUN_DIR");
+  app.add_flag("--overwrite", overwrite, "replace the run already in --out")->excludes("--resume");
+  app.footer("\nExit status: 0 finished; 2 bad input (one line naming it, nothing written); " +
+             std::to_string(colav::kDivergedStatus) +
+             " training diverged\n(NaN or Inf; the last good checkpoint is kept); " +
+             std::to_string(colav::kStoppedStatus) +
+             " stopped by SIGINT or SIGTERM after a checkpoint:\n--resume RUN_DIR continues and "
+             "ends with the files of an uninterrupted run. One process\nwrites a run folder at a "
+             "time (RUN_DIR/.lock).\n" +
+             app.get_footer());
   app.add_flag("-v,--verbose", verbose, "debug logging");
 
   std::vector<std::string> args = WithRunConfig(argc, argv);
@@ -84,17 +98,15 @@ int Main(int argc, char** argv) {
   }
 
   const colav::RunFolder run = colav::RunFolder::Create(run_path);
+  if (resume.empty()) {
+    run.StartNewRun({"training_state.pt", "summary.json"}, kRunOutputs, overwrite,
+                    "continue it with --resume " + run_path + ", or replace it with --overwrite");
+  } else {
+    // The thread count does not change results (the worlds step the same on any number).
+    run.RequireConfigUnchanged(config, binding.Schema(), {"train.env_threads"});
+  }
   colav::InitLogging("train_ppo", run.LogPath(), verbose);
   run.WriteResolvedConfig(config);
-  // The baseline has no pre-trained encoder to lock: it always trains.
-  const colav::FeatureExtractorOptions& extractor = options.model.extractor;
-  const std::string training_mode = extractor.kind == colav::ExtractorKind::kBaseline
-                                        ? "trained from scratch"
-                                    : extractor.locked ? "locked"
-                                                       : "unlocked";
-  spdlog::info("{} {} steps (extractor {}, {}) in {}", resume.empty() ? "training" : "resuming",
-               options.ppo.total_steps, colav::ExtractorKindName(extractor.kind), training_mode,
-               run_path);
   // The networks are far too small for intra-op threads; idle OpenMP workers would only compete
   // with the environment's threads.
   torch::set_num_threads(1);
@@ -109,6 +121,10 @@ int Main(int argc, char** argv) {
         100 * r.progress, r.mean_cte, r.steps, 100 * r.collision_rate);
     std::cout << "steps_per_s: " << summary.steps_per_s << "\n"
               << "wall_s: " << summary.wall_s << std::endl;
+    if (!summary.finished) {
+      spdlog::info("stopped on request; --resume {} continues", run_path);
+      return colav::kStoppedStatus;
+    }
   } catch (const colav::TrainingDiverged& diverged) {
     spdlog::error("training diverged: {}; the last good checkpoint is kept in {}", diverged.what(),
                   run_path);

@@ -42,6 +42,18 @@ void DrawRunFigures(const VaeData& data, const VaeTrainingOptions& options,
                            "Test scans and mean reconstructions", run_dir / "reconstructions.png");
 }
 
+// What a run writes in its folder besides its configuration and log: removed when a new run
+// starts there.
+std::vector<std::string> RunOutputs(const RunFolder& folder) {
+  std::vector<std::string> outputs = {"summary.json", "summary.md", "training_curves.png",
+                                      "reconstructions.png"};
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path())) {
+    const std::string name = entry.path().filename().string();
+    if (entry.is_directory() && name.rfind("seed_", 0) == 0) outputs.push_back(name);
+  }
+  return outputs;
+}
+
 int TrainVae(int argc, char** argv) {
   CLI::App app{
       "Pre-trains ShallowConvVAE or DeepConvVAE (paper table, CPTC-1D decoder) on a dataset from\n"
@@ -51,10 +63,19 @@ int TrainVae(int argc, char** argv) {
       "error, active latent dims); rerunning the same command resumes. RUN_DIR/summary.json and\n"
       "summary.md give the test error's mean, sd and Student-t 95 % CI over seeds; figures:\n"
       "training_curves.png, reconstructions.png. The multi-model figures of the paper (zero\n"
-      "padding vs CPTC, latent densities) come from the program vae_figures. A NaN or infinite\n"
-      "loss or weight stops the run with exit status 3, keeping the last good checkpoint."};
+      "padding vs CPTC, latent densities) come from the program vae_figures."};
   std::string run_dir;
+  bool overwrite = false;
   app.add_option("--out", run_dir, "run folder (created; reused to resume)")->required();
+  app.add_flag("--overwrite", overwrite, "replace the run in --out (finished or not)");
+  app.footer("\nExit status: 0 finished; 2 bad input (one line naming it, nothing written); " +
+             std::to_string(kDivergedStatus) +
+             " training diverged\n(NaN or Inf; the last good checkpoint is kept); " +
+             std::to_string(kStoppedStatus) +
+             " stopped by SIGINT or SIGTERM after an epoch's\ncheckpoint: the same command "
+             "continues, under the same configuration, and ends with\nthe files of an "
+             "uninterrupted run. A finished run in --out is kept unless --overwrite.\nOne "
+             "process writes a run folder at a time (RUN_DIR/.lock).\n");
   const OptionsBinding<VaeTrainingOptions> binding = VaeTrainingBinding();
   ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--data", "data.path");
@@ -76,6 +97,10 @@ int TrainVae(int argc, char** argv) {
   const VaeData data = LoadVaeData(options.data_path, options.transform);
 
   const RunFolder folder = RunFolder::Create(run_dir);
+  const bool continues = !overwrite && std::filesystem::exists(folder.path() / "config.yaml");
+  folder.StartNewRun({"summary.json"}, continues ? std::vector<std::string>{} : RunOutputs(folder),
+                     overwrite, "replace it with --overwrite");
+  if (continues) folder.RequireConfigUnchanged(config, binding.Schema());
   InitLogging("train_vae", folder.LogPath(), false);
   folder.WriteResolvedConfig(config);
   torch::set_num_threads(options.threads);
@@ -93,6 +118,9 @@ int TrainVae(int argc, char** argv) {
       spdlog::error("seed {} diverged: {}; the last good checkpoint is kept in {}", k,
                     diverged.what(), seed_dir.string());
       return kDivergedStatus;
+    } catch (const TrainingStopped& stopped) {
+      spdlog::info("seed {} {}", k, stopped.what());
+      return kStoppedStatus;
     }
     const SeedResult& r = results.back();
     spdlog::info(

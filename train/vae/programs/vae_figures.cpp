@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "src/cli.h"
+#include "src/finished_output.h"
 #include "src/output_path.h"
 #include "src/seeding.h"
 #include "src/training_diverged.h"
@@ -34,8 +35,13 @@ ConvVae TrainLogged(const VaeTrainingOptions& options, const VaeData& data,
   return model;
 }
 
+// The PNG of figure "padding" or "kde" in folder `out`.
+std::filesystem::path FigurePath(const std::filesystem::path& out, const std::string& figure) {
+  return out / (figure == "padding" ? "padding_comparison.png" : "latent_kde.png");
+}
+
 void DrawPaddingComparison(VaeTrainingOptions options, const VaeData& data,
-                           const std::filesystem::path& out) {
+                           const std::filesystem::path& png) {
   options.model = {VaeArchitecture::kShallow, 12, DecoderPadding::kZero};
   const ConvVae zero = TrainLogged(options, data, "zero_padding");
   options.model.decoder_padding = DecoderPadding::kCircular;
@@ -46,7 +52,7 @@ void DrawPaddingComparison(VaeTrainingOptions options, const VaeData& data,
                            {"zero padding", "CPTC-1D"}, options.transform,
                            "ShallowConvVAE (12) decoders on test scans with an obstacle across the "
                            "seam (dashed)",
-                           out / "padding_comparison.png");
+                           png);
 }
 
 // One sampled z per test scan: the aggregate posterior the paper's density figure shows.
@@ -58,7 +64,7 @@ torch::Tensor SampleTestLatents(ConvVae& model, const torch::Tensor& test, std::
 }
 
 void DrawLatentDensities(VaeTrainingOptions options, const VaeData& data,
-                         const std::filesystem::path& out) {
+                         const std::filesystem::path& png) {
   std::vector<DensityPanel> panels;
   for (const VaeArchitecture architecture : {VaeArchitecture::kShallow, VaeArchitecture::kDeep}) {
     for (const double beta : {0.0, 1.0, 5.0}) {
@@ -75,7 +81,7 @@ void DrawLatentDensities(VaeTrainingOptions options, const VaeData& data,
     }
   }
   DrawDensityPanels(panels, 3, "Kernel density of the test set's latent codes (latent size 2)",
-                    out / "latent_kde.png");
+                    png);
 }
 
 int VaeFigures(int argc, char** argv) {
@@ -88,7 +94,9 @@ int VaeFigures(int argc, char** argv) {
       "Eight models of 25 epochs: a few minutes. Other keys as train_vae."};
   std::string out_dir;
   std::vector<std::string> figures = {"padding", "kde"};
+  bool overwrite = false;
   app.add_option("--out", out_dir, "folder for the PNG files")->required();
+  app.add_flag("--overwrite", overwrite, "redraw figures that --out holds already");
   app.add_option("--figures", figures, "which figures: padding, kde")
       ->check(CLI::IsMember({"padding", "kde"}))
       ->delimiter(',');
@@ -101,13 +109,17 @@ int VaeFigures(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const VaeTrainingOptions options = binding.Read(config_flags.Resolve());
   RequireWritableFolder(out_dir, "--out");
+  std::vector<std::filesystem::path> outputs;
+  outputs.reserve(figures.size());
+  for (const std::string& figure : figures) outputs.push_back(FigurePath(out_dir, figure));
+  RefuseToReplaceFinishedOutput(outputs, "--out", overwrite);
   torch::set_num_threads(options.threads);
 
   const VaeData data = LoadVaeData(options.data_path, options.transform);
   try {
     for (const std::string& figure : figures) {
-      if (figure == "padding") DrawPaddingComparison(options, data, out_dir);
-      if (figure == "kde") DrawLatentDensities(options, data, out_dir);
+      if (figure == "padding") DrawPaddingComparison(options, data, FigurePath(out_dir, figure));
+      if (figure == "kde") DrawLatentDensities(options, data, FigurePath(out_dir, figure));
     }
   } catch (const TrainingDiverged& diverged) {
     spdlog::error("training diverged: {}", diverged.what());
