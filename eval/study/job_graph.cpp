@@ -72,6 +72,12 @@ void AddTrainingFigureJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
 
 }  // namespace
 
+std::string JobFileStem(const std::string& id) {
+  std::string stem = id;
+  std::replace(stem.begin(), stem.end(), '/', '_');
+  return stem;
+}
+
 std::filesystem::path VaeFiguresFolder() { return std::filesystem::path("figures") / "vae"; }
 
 std::filesystem::path TrainingFigurePath(const std::string& config) {
@@ -180,7 +186,9 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
     job.expected_models = group.models;
     job.args.insert(job.args.end(),
                     {"--episodes", std::to_string(group.episodes), "--seed",
-                     std::to_string(group.seed), "--trajectories", "0", "--out", dir.string()});
+                     std::to_string(group.seed), "--trajectories", "0", "--out", dir.string(),
+                     // A rerun (models added to the study) replaces the previous evaluation.
+                     "--overwrite"});
     AddJob(jobs, job);
   }
   return jobs;

@@ -40,6 +40,10 @@ struct EvaluationGroup {
   std::uint64_t seed = 0;
 };
 
+/// The job's id as one file name ("ppo/baseline/seed_0" -> "ppo_baseline_seed_0"): its log, its
+/// claims.
+std::string JobFileStem(const std::string& id);
+
 /// "figures/vae": vae_figures' folder (padding_comparison.png, latent_kde.png) when the study
 /// draws them, relative to the study's output folder.
 std::filesystem::path VaeFiguresFolder();
