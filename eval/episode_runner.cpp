@@ -7,6 +7,7 @@
 
 #include "env/environment.h"
 #include "env/scenario_file.h"
+#include "eval/replay/replay_recorder.h"
 #include "src/threads/thread_pool.h"
 
 namespace colav {
@@ -18,6 +19,7 @@ struct Lane {
   float* observation = nullptr;  // row of the policy's observation batch
   bool done = false;
   EpisodeOutcome outcome;
+  std::optional<ReplayRecorder> recorder;  // when replays are recorded
 };
 
 void StepLane(Lane& lane, const float* action) {
@@ -25,9 +27,11 @@ void StepLane(Lane& lane, const float* action) {
   const StepResult result = lane.env->Step(action_values, lane.observation);
   lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
   lane.outcome.cumulative_rewards.push_back(lane.outcome.cumulative_rewards.back() + result.reward);
+  if (lane.recorder) lane.recorder->Record(lane.env->world(), action_values, result);
   if (result.episode) {
     lane.outcome.metrics = *result.episode;
     lane.done = true;
+    if (lane.recorder) lane.outcome.replay = lane.recorder->TakeReplay();
   }
 }
 
@@ -54,7 +58,7 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
     std::vector<Policy>& policies, int first, int last,
     const std::vector<EvaluationEpisode>& episodes, const EnvironmentConfig& config,
     ThreadPool& pool, int finished_before, int total,
-    const std::function<void(int finished, int total)>& on_episode_done) {
+    const std::function<void(int finished, int total)>& on_episode_done, bool record_replays) {
   const int num_models = last - first;
   const int num_episodes = static_cast<int>(episodes.size());
   std::vector<torch::Tensor> observations;
@@ -72,6 +76,9 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
       lane.env->Reset(episode.seed.value_or(0), lane.observation);
       lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
       lane.outcome.cumulative_rewards.push_back(0.0);
+      if (record_replays) {
+        lane.recorder.emplace(lane.env->world(), episode.name, policies[first + m].name());
+      }
     }
   }
   int finished = 0;
@@ -113,7 +120,7 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
 std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
     std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
     const EnvironmentConfig& config, int num_threads,
-    const std::function<void(int finished, int total)>& on_episode_done) {
+    const std::function<void(int finished, int total)>& on_episode_done, bool record_replays) {
   const int num_models = static_cast<int>(policies.size());
   const int num_episodes = static_cast<int>(episodes.size());
   const int total = num_models * num_episodes;
@@ -124,8 +131,9 @@ std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
   std::vector<std::vector<EpisodeOutcome>> outcomes;
   for (int first = 0; first < num_models; first += block) {
     const int last = std::min(num_models, first + block);
-    auto block_outcomes = RunModelBlock(policies, first, last, episodes, config, pool,
-                                        first * num_episodes, total, on_episode_done);
+    auto block_outcomes =
+        RunModelBlock(policies, first, last, episodes, config, pool, first * num_episodes, total,
+                      on_episode_done, record_replays);
     std::move(block_outcomes.begin(), block_outcomes.end(), std::back_inserter(outcomes));
   }
   return outcomes;

@@ -4,11 +4,13 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <optional>
 #include <vector>
 
 #include "env/environment_spec.h"
 #include "eval/evaluation_episodes.h"
 #include "eval/policy.h"
+#include "eval/replay/replay.h"
 
 namespace colav {
 
@@ -17,6 +19,7 @@ struct EpisodeOutcome {
   EpisodeMetrics metrics;
   std::vector<Eigen::Vector2d> positions;  ///< vessel position, row 0 = after reset
   std::vector<double> cumulative_rewards;  ///< cumulative reward at each position (0 at reset)
+  std::optional<Replay> replay;  ///< every step, labelled by the policy's name, if recorded
 };
 
 /// outcomes[m][e]: policy m on episode e, in the environment `config` under the policy's own
@@ -25,10 +28,11 @@ struct EpisodeOutcome {
 /// result does not depend on the other episodes when the policy's rows are computed independently
 /// of the batch size, as LibTorch's CPU kernels do for two rows and more.
 /// `on_episode_done(finished, total)` is called from the calling thread after each time step in
-/// which episodes finished.
+/// which episodes finished. With `record_replays`, each outcome holds its episode as a replay.
 std::vector<std::vector<EpisodeOutcome>> RunEpisodes(
     std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
     const EnvironmentConfig& config, int num_threads,
-    const std::function<void(int finished, int total)>& on_episode_done = {});
+    const std::function<void(int finished, int total)>& on_episode_done = {},
+    bool record_replays = false);
 
 }  // namespace colav

@@ -2,12 +2,14 @@
 
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
 #include "env/batched_environment.h"
 #include "env/scenario_file.h"
 #include "env/training_scenario.h"
+#include "eval/replay/scene_frame.h"
 #include "python/episode_metrics.h"
 
 namespace colav::python {
@@ -28,8 +30,12 @@ py::array_t<double> DoubleArray(const Values& values) {
 }  // namespace
 
 SingleEnvironment::SingleEnvironment(const ResolvedSettings& settings,
-                                     std::optional<Scenario> scenario, std::uint64_t seed)
-    : environment_(settings.config, SourceOf(std::move(scenario))), seed_(seed) {}
+                                     std::optional<Scenario> scenario, std::uint64_t seed,
+                                     bool render)
+    : environment_(settings.config, SourceOf(scenario)),
+      seed_(seed),
+      render_(render),
+      scene_name_(scenario ? scenario->name : "training world") {}
 
 py::array_t<float> SingleEnvironment::Reset(std::optional<std::uint64_t> seed) {
   if (seed) {
@@ -41,6 +47,7 @@ py::array_t<float> SingleEnvironment::Reset(std::optional<std::uint64_t> seed) {
   started_ = episode_running_ = true;
   py::array_t<float> observation(kObservationSize);
   environment_.Reset(TrainingEpisodeSeed(seed_, 0, episode_), observation.mutable_data());
+  if (render_) recorder_.emplace(environment_.world(), scene_name_, "agent");
   return observation;
 }
 
@@ -55,6 +62,7 @@ py::tuple SingleEnvironment::Step(const py::object& action) {
   }
   py::array_t<float> observation(kObservationSize);
   const StepResult result = environment_.Step(values.data(), observation.mutable_data());
+  if (recorder_) recorder_->Record(environment_.world(), values.data(), result);
   episode_running_ = !(result.terminated || result.truncated);
   return py::make_tuple(observation, result.reward, result.terminated, result.truncated,
                         result.episode ? py::object(MetricsDict(*result.episode)) : py::none());
@@ -74,13 +82,28 @@ py::dict SingleEnvironment::State() const {
   return state;
 }
 
+py::array_t<std::uint8_t> SingleEnvironment::Render(int width, int height) const {
+  if (!render_) throw std::runtime_error("render(): the environment was made without rendering");
+  if (!recorder_) throw std::runtime_error("render() before reset(): call reset() first");
+  if (width < 16 || height < 16 || width > 4096 || height > 4096) {
+    throw py::value_error("render(): width and height must be in [16, 4096]");
+  }
+  const Replay& replay = recorder_->replay();
+  const int step = ReplayLength(replay) - 1;
+  const RgbImage image = DrawFrame(replay, step, FollowView(replay, 0, step, width, height));
+  py::array_t<std::uint8_t> pixels({height, width, 3});
+  std::copy(image.rgb.begin(), image.rgb.end(), pixels.mutable_data());
+  return pixels;
+}
+
 void BindSingleEnvironment(py::module_& module) {
   py::class_<SingleEnvironment>(module, "SingleEnvironment")
-      .def(py::init<const ResolvedSettings&, std::optional<Scenario>, std::uint64_t>(),
-           py::arg("settings"), py::arg("scenario"), py::arg("seed"))
+      .def(py::init<const ResolvedSettings&, std::optional<Scenario>, std::uint64_t, bool>(),
+           py::arg("settings"), py::arg("scenario"), py::arg("seed"), py::arg("render") = false)
       .def("reset", &SingleEnvironment::Reset, py::arg("seed"))
       .def("step", &SingleEnvironment::Step, py::arg("action"))
-      .def("state", &SingleEnvironment::State);
+      .def("state", &SingleEnvironment::State)
+      .def("render", &SingleEnvironment::Render, py::arg("width"), py::arg("height"));
 }
 
 }  // namespace colav::python

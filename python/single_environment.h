@@ -7,8 +7,10 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "env/environment.h"
+#include "eval/replay/replay_recorder.h"
 #include "python/settings.h"
 
 namespace colav::python {
@@ -18,9 +20,10 @@ namespace py = pybind11;
 class SingleEnvironment {
  public:
   /// Training worlds: episode k is the world of TrainingEpisodeSeed(seed, 0, k), as world 0 of a
-  /// VectorEnvironment with the same seed. With a scenario, every episode replays it.
+  /// VectorEnvironment with the same seed. With a scenario, every episode replays it. With
+  /// `render`, each episode is recorded for Render.
   SingleEnvironment(const ResolvedSettings& settings, std::optional<Scenario> scenario,
-                    std::uint64_t seed);
+                    std::uint64_t seed, bool render);
 
   /// Starts the next episode (with a seed: episode 0 of that seed); returns its observation.
   py::array_t<float> Reset(std::optional<std::uint64_t> seed);
@@ -35,12 +38,19 @@ class SingleEnvironment {
   /// last reset or step (the columns of a `simulate` trace).
   py::dict State() const;
 
+  /// The scene now (the episode's track so far) as a height x width x 3 uint8 array, drawn as
+  /// the replay frames are (eval/replay/scene_frame.h, follow view).
+  py::array_t<std::uint8_t> Render(int width, int height) const;
+
  private:
   Environment environment_;
   std::uint64_t seed_;
   std::uint64_t episode_ = 0;
   bool started_ = false;
   bool episode_running_ = false;
+  bool render_;
+  std::string scene_name_;
+  std::optional<ReplayRecorder> recorder_;  ///< the episode so far, with render
 };
 
 /// Registers SingleEnvironment as _colav.SingleEnvironment.

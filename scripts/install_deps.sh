@@ -9,6 +9,8 @@ PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox python3 python3-torch python3-h5py python3-numpy
   pybind11-dev python3-dev python3-pytest
+  openmpi-bin slurm-wlm munge
+  libcairo2-dev libgif-dev chromium
 )
 
 missing=()

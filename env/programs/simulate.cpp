@@ -1,5 +1,5 @@
 // simulate: replays a scenario file under an action sequence and writes the per-step trace
-// (shared/spec/interfaces.md), optionally a picture of the scene.
+// (shared/spec/interfaces.md), optionally a picture of the scene and a replay (HTML, GIF, MP4).
 #include <CLI/CLI.hpp>
 #include <iostream>
 #include <limits>
@@ -10,9 +10,12 @@
 #include "env/scene_plot.h"
 #include "env/trace.h"
 #include "env/training_scenario.h"
+#include "eval/replay/replay_flags.h"
+#include "eval/replay/replay_recorder.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
+#include "src/finished_output.h"
 #include "src/number_flag.h"
 #include "src/output_path.h"
 
@@ -52,7 +55,10 @@ int Simulate(int argc, char** argv) {
   app.add_option("--actions", actions_path, "actions file: header a0,a1, one row per step")
       ->required();
   app.add_option("--out", trace_path, "trace file to write (CSV)")->required();
+  bool overwrite = false;
+  app.add_flag("--overwrite", overwrite, "replace an existing trace file");
   app.add_option("--plot", plot_path, "also draw the scene and the track to this PNG");
+  ReplayFlags replay_flags(app);
   const OptionsBinding<EnvironmentConfig> binding = EnvironmentBinding();
   const ConfigFlags config_flags(app, binding.Schema());
   ParseCommandLine(app, argc, argv);
@@ -62,18 +68,26 @@ int Simulate(int argc, char** argv) {
   const Scenario scenario = ChosenScenario(scenario_path, *seed_option, training_seed);
   const auto actions = LoadActionsFile(actions_path);
   RequireWritableFile(trace_path, "--out");
+  RefuseToReplaceFinishedOutput({trace_path}, "--out", overwrite);
   if (!save_scenario_path.empty()) RequireWritableFile(save_scenario_path, "--save-scenario");
   if (!plot_path.empty()) RequireWritableFile(plot_path, "--plot");
+  replay_flags.Check();
 
   Environment env(env_config, std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
   env.Reset(0, observation.data());
   std::string trace = TraceHeader() + "\n" + TraceRow(0, env.world(), StepResult{}) + "\n";
   SceneTrack track{"vessel", {env.world().vessel().head<2>()}, {}, false};
+  std::optional<ReplayRecorder> recorder;
+  if (replay_flags.wanted()) {
+    recorder.emplace(env.world(), scenario.name,
+                     std::filesystem::path(actions_path).stem().string());
+  }
   std::int64_t step = 0;
   for (const auto& action : actions) {
     const StepResult result = env.Step(action.data(), observation.data());
     trace += TraceRow(++step, env.world(), result) + "\n";
+    if (recorder) recorder->Record(env.world(), action.data(), result);
     track.positions.emplace_back(env.world().vessel().head<2>());
     track.collision = result.collision;
     if (result.terminated || result.truncated) break;
@@ -86,6 +100,7 @@ int Simulate(int argc, char** argv) {
     PlotScene(scenario, {track}, step, plot_path,
               scenario.name + " (" + std::to_string(step) + " steps)");
   }
+  if (recorder) replay_flags.Write(recorder->replay());
   return 0;
 }
 

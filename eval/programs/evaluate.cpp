@@ -14,12 +14,15 @@
 #include "eval/evaluation_episodes.h"
 #include "eval/evaluation_report.h"
 #include "eval/policy.h"
+#include "eval/replay/replay_page.h"
+#include "eval/replay/replay_recorder.h"
 #include "eval/safe_name.h"
 #include "eval/trajectory_figure.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
 #include "src/logging.h"
+#include "src/number_flag.h"
 #include "src/progress.h"
 #include "src/run_folder.h"
 #include "src/threads/thread_pool.h"
@@ -175,6 +178,52 @@ void PlotTestTrajectories(std::vector<Policy>& policies,
   }
 }
 
+// Which episodes --replay writes, and how they are chosen.
+struct ReplayChoice {
+  bool enabled = false;
+  int first = 3;     ///< the first test scenarios
+  int collided = 3;  ///< and the first other test scenarios in which some model collided
+};
+
+// Indices of the episodes to replay: every scenario file; of the test scenarios, the first
+// `first` and then the first `collided` others in which some model collided.
+std::vector<int> ReplayedEpisodes(const ReplayChoice& choice, bool on_files,
+                                  const std::vector<std::vector<EpisodeOutcome>>& outcomes) {
+  const int count = outcomes.empty() ? 0 : static_cast<int>(outcomes.front().size());
+  std::vector<int> chosen;
+  int collided = 0;
+  for (int e = 0; e < count; ++e) {
+    const bool any_collision =
+        std::any_of(outcomes.begin(), outcomes.end(),
+                    [&](const auto& model) { return model[e].metrics.collision; });
+    if (on_files || e < choice.first) {
+      chosen.push_back(e);
+    } else if (any_collision && collided < choice.collided) {
+      chosen.push_back(e);
+      ++collided;
+    }
+  }
+  return chosen;
+}
+
+// OUT/replays/<episode>.html: each chosen episode with every model's run, re-run with recording
+// (a model's episode does not depend on the batch it runs in, so these are the evaluated runs).
+void WriteReplays(std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
+                  const std::vector<int>& chosen, const EnvironmentConfig& env, int threads,
+                  const std::filesystem::path& out) {
+  std::vector<EvaluationEpisode> replayed;
+  replayed.reserve(chosen.size());
+  for (const int e : chosen) replayed.push_back(episodes[e]);
+  auto outcomes = RunEpisodes(policies, replayed, env, threads, {}, /*record_replays=*/true);
+  for (std::size_t e = 0; e < replayed.size(); ++e) {
+    std::vector<Replay> runs;
+    runs.reserve(outcomes.size());
+    for (auto& model : outcomes) runs.push_back(std::move(*model[e].replay));
+    WriteReplayPage(CombineRuns(std::move(runs)), out / "replays" / (replayed[e].name + ".html"));
+  }
+  spdlog::info("wrote {} replay page(s) to {}", replayed.size(), (out / "replays").string());
+}
+
 int Evaluate(int argc, char** argv) {
   CLI::App app{
       "Runs trained policies (TorchScript policy.pt) with deterministic actions on the shared "
@@ -195,6 +244,19 @@ int Evaluate(int argc, char** argv) {
   auto* scenario_option = app.add_option("--scenario", scenario_files,
                                          "evaluate on these scenario files instead, repeatable");
   app.add_option("--out", out, "output folder")->required();
+  bool overwrite = false;
+  app.add_flag("--overwrite", overwrite, "replace the evaluation already in --out");
+  ReplayChoice replay_choice;
+  app.add_flag("--replay", replay_choice.enabled,
+               "also write replay pages (OUT/replays/<scenario>.html, every model in each): every "
+               "scenario file, or the test scenarios chosen by --replay-first and "
+               "--replay-collisions");
+  AddNumberFlag(app, "--replay-first", replay_choice.first,
+                "with --replay: the first this many test scenarios", 0, 100000);
+  AddNumberFlag(app, "--replay-collisions", replay_choice.collided,
+                "with --replay: also the first this many other test scenarios in which some "
+                "model collided",
+                0, 100000);
   const OptionsBinding<EvaluateOptions> binding = EvaluateBinding();
   ConfigFlags config_flags(app, binding.Schema());
   config_flags.AddFlag("--episodes", "eval.episodes")->excludes(scenario_option);
@@ -219,6 +281,7 @@ int Evaluate(int argc, char** argv) {
       on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
                : TestEpisodes(seed, options.episodes);
   const RunFolder folder = RunFolder::Create(out, "evaluate");
+  folder.StartNewRun({"summary.json"}, {}, overwrite, "replace it with --overwrite");
   InitLogging("evaluate", folder.LogPath(), false);
   folder.WriteResolvedConfig(config);
   spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),
@@ -248,6 +311,10 @@ int Evaluate(int argc, char** argv) {
   WriteTextFileAtomically(folder.path() / "summary.md", markdown);
   std::cout << markdown;
 
+  if (replay_choice.enabled) {
+    WriteReplays(policies, episodes, ReplayedEpisodes(replay_choice, on_files, outcomes),
+                 options.env, threads, folder.path());
+  }
   if (on_files) {
     PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());
   } else {

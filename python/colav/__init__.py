@@ -13,7 +13,7 @@ Bad settings, seeds or scenario files raise ValueError naming the key or file.
 """
 
 from . import _colav
-from ._envs import Env, VectorEnv, make, make_vec
+from ._envs import RENDER_SIZE, Env, VectorEnv, make, make_vec
 from ._spaces import ACTION_SIZE, OBSERVATION_SIZE, Box, gymnasium
 
 UserError = _colav.UserError

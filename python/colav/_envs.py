@@ -14,6 +14,7 @@ _VectorEnvBase = gymnasium.vector.VectorEnv if gymnasium is not None else object
 # Autoreset as EnvPool does it (Gymnasium's "same-step" mode): see VectorEnv.
 _autoreset_modes = getattr(gymnasium.vector, "AutoresetMode", None) if gymnasium else None
 _SAME_STEP = _autoreset_modes.SAME_STEP if _autoreset_modes is not None else "SameStep"
+RENDER_SIZE = 480  # pixels, the frames of `simulate --gif`
 
 
 def _setting_text(value):
@@ -66,26 +67,33 @@ class _Closed:
 class Env(_EnvBase):
     """One world with the Gymnasium Env interface.
 
-    Env(seed=0, scenario=None, **settings): training worlds (episode k is the world of episode k
-    of world 0 of make_vec(seed=seed)), or, with `scenario` (a scenario file path or a
-    colav.Scenario), that scenario in every episode. `settings` are the env.* keys of the programs'
+    Env(seed=0, scenario=None, render_mode=None, **settings): training worlds (episode k is the
+    world of episode k of world 0 of make_vec(seed=seed)), or, with `scenario` (a scenario file
+    path or a colav.Scenario), that scenario in every episode. `settings` are the env.* keys of the programs'
     configuration (colav.env_settings()), e.g. closeness="log", test_mode=True, max_steps=500.
 
     Actions are used in double precision, as `simulate` uses them. step() returns
     (obs float32 [186], reward float, terminated bool, truncated bool, info); info is {} except on
     the last step of an episode: {"episode_metrics": {...}} (what evaluate records). state() gives
     the world behind the observation (the columns of a `simulate` trace).
+
+    With render_mode="rgb_array", render() returns the scene now as a uint8 array
+    [RENDER_SIZE, RENDER_SIZE, 3], drawn as `simulate --gif` draws its frames: the vessel (blue)
+    in the middle of a 300 m wide view, its track, rays, path, obstacles.
     """
 
-    metadata = {"render_modes": []}
+    metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
     render_mode = None
 
-    def __init__(self, seed=0, *, scenario=None, **settings):
+    def __init__(self, seed=0, *, scenario=None, render_mode=None, **settings):
+        if render_mode not in (None, "rgb_array"):
+            raise ValueError(f"render_mode: expected None or 'rgb_array', got {render_mode!r}")
         resolved = _resolve(settings, "colav.Env")
         self.settings = resolved.values
+        self.render_mode = render_mode
         self._core = _colav.SingleEnvironment(
             resolved, None if scenario is None else _scenario(scenario),
-            _whole_number("seed", seed, 0),
+            _whole_number("seed", seed, 0), render=render_mode is not None,
         )
         self.observation_space = observation_space()
         self.action_space = action_space()
@@ -108,8 +116,11 @@ class Env(_EnvBase):
         return self._core.state()
 
     def render(self):
-        """No render modes yet: returns None."""
-        return None
+        """The scene as a uint8 array [RENDER_SIZE, RENDER_SIZE, 3] with render_mode="rgb_array";
+        None without a render mode."""
+        if self.render_mode is None:
+            return None
+        return self._core.render(RENDER_SIZE, RENDER_SIZE)
 
     def close(self):
         self._core = _Closed()
