@@ -5,9 +5,12 @@
 #include <map>
 
 #include "src/error.h"
+#include "tests/src/test_util.h"
 
 namespace colav {
 namespace {
+
+using testing_util::UserErrorMessage;
 
 // A launcher's environment made of the given variables only.
 EnvironmentLookup Environment(const std::map<std::string, std::string>& variables) {
@@ -16,17 +19,6 @@ EnvironmentLookup Environment(const std::map<std::string, std::string>& variable
     if (found == variables.end()) return std::nullopt;
     return found->second;
   };
-}
-
-// The UserError message of `resolve`, or "" when it does not throw one.
-template <typename Function>
-std::string ErrorOf(Function resolve) {
-  try {
-    resolve();
-  } catch (const UserError& error) {
-    return error.what();
-  }
-  return "";
 }
 
 void ExpectShard(const StudyShard& shard, int index, int count, const std::string& source) {
@@ -40,7 +32,7 @@ TEST(LauncherEnvironmentTest, ShardFlag) {
   ExpectShard(ParseShardFlag("2/3"), 2, 3, "--shard");
   for (const char* bad : {"", "3", "3/3", "4/3", "-1/2", "a/2", "1/0", "0/0", "1/2/3", " 1/2",
                           "1/2 ", "1/", "/2", "1.0/2", "99999999/100000000"}) {
-    const std::string message = ErrorOf([&] { ParseShardFlag(bad); });
+    const std::string message = UserErrorMessage([&] { ParseShardFlag(bad); });
     EXPECT_NE(message.find(std::string("--shard ") + bad + ":"), std::string::npos)
         << "'" << bad << "': " << message;
   }
@@ -110,7 +102,8 @@ TEST(LauncherEnvironmentTest, BadLauncherValuesNameTheVariable) {
       {{{"SLURM_PROCID", "0"}}, "SLURM_NTASKS: not set"},
   };
   for (const auto& [variables, expected] : cases) {
-    const std::string message = ErrorOf([&] { ShardFromLauncher(Environment(variables)); });
+    const std::string message =
+        UserErrorMessage([&] { ShardFromLauncher(Environment(variables)); });
     EXPECT_NE(message.find(expected), std::string::npos) << expected << ": " << message;
   }
 }
