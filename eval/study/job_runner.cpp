@@ -419,6 +419,10 @@ JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions&
   return Scheduler(jobs, options).Run();
 }
 
+bool AllJobsComplete(const std::vector<StudyJob>& jobs) {
+  return std::all_of(jobs.begin(), jobs.end(), Complete);
+}
+
 std::filesystem::path ProgramFolder() {
   return std::filesystem::read_symlink("/proc/self/exe").parent_path();
 }

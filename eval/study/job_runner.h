@@ -51,6 +51,9 @@ void CheckJobConfigurations(const std::vector<StudyJob>& jobs,
 /// dies, so that it checkpoints and its claim can be taken over.
 JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions& options);
 
+/// Whether the outputs of every job are complete (a finished study, whoever ran it).
+bool AllJobsComplete(const std::vector<StudyJob>& jobs);
+
 /// The folder of the running program (/proc/self/exe), where the other programs are built.
 std::filesystem::path ProgramFolder();
 

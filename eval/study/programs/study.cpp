@@ -5,6 +5,9 @@
 // Any number of such runners (ranks of mpirun or srun, tasks of a Slurm array, on any machines
 // sharing OUT) can run one study together: they claim its jobs through OUT/claims/
 // (job_claims.h), and the one that completes the study's last job writes the report.
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -13,7 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "eval/study/job_claims.h"
 #include "eval/study/job_graph.h"
 #include "eval/study/job_runner.h"
 #include "eval/study/launcher_environment.h"
@@ -39,15 +41,31 @@ void SayShard(const StudyShard& shard) {
                static_cast<long long>(self.pid));
 }
 
-// The claim that elects one writer when two ranks complete the study at the same moment (no job
-// is called so).
-constexpr const char* kReportClaim = "report";
+// Marks that this completion of the study has its report. Created exclusively, so that of the
+// ranks that complete the study at the same moment exactly one writes the report; removed when a
+// rank starts on an incomplete study, whose report will be out of date.
+std::filesystem::path ReportWrittenMarker(const std::filesystem::path& folder) {
+  return folder / "claims" / "report.written";
+}
+
+bool CreateExclusively(const std::filesystem::path& path) {
+  std::filesystem::create_directories(path.parent_path());
+  const int fd = open(path.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0644);
+  if (fd < 0) return false;
+  close(fd);
+  return true;
+}
 
 // The report is written once per completed study: by the rank whose job completed it, or, when no
-// job was left to run, by rank 0 (or by --report).
-bool WritesReport(const JobRunSummary& summary, const StudyShard& shard) {
+// job was left to run, by rank 0 (always on one machine, so a rerun prints it again; among ranks
+// only if nobody wrote it yet) or by --report.
+bool WritesReport(const JobRunSummary& summary, const StudyShard& shard,
+                  const std::filesystem::path& folder) {
   const bool nothing_to_run = summary.finished == 0 && summary.by_others == 0;
-  return summary.completed_study || (nothing_to_run && shard.index == 0);
+  if (nothing_to_run && shard.index == 0 && shard.count == 1) return true;
+  if (!summary.completed_study && !(nothing_to_run && shard.index == 0)) return false;
+  return CreateExclusively(ReportWrittenMarker(folder)) ||
+         !std::filesystem::exists(folder / "REPORT.md");
 }
 
 int Study(int argc, char** argv) {
@@ -104,6 +122,7 @@ int Study(int argc, char** argv) {
   if (!report_only) {
     SayShard(shard);
     const std::vector<StudyJob> graph = BuildJobGraph(spec, folder);
+    if (!AllJobsComplete(graph)) std::filesystem::remove(ReportWrittenMarker(folder));
     CheckJobConfigurations(graph, ProgramFolder());
     summary = RunJobs(graph, {jobs, ProgramFolder(), folder / "logs", folder / "claims",
                               std::chrono::seconds(claim_timeout_s), shard.index});
@@ -116,15 +135,12 @@ int Study(int argc, char** argv) {
   }
   if (summary.stopped) return kStoppedStatus;
   if (summary.failed > 0) return kJobsFailedStatus;
-  JobClaims claims(folder / "claims", CurrentProcess(), std::chrono::seconds(claim_timeout_s));
-  if (!report_only && (!WritesReport(summary, shard) ||
-                       !claims.TryClaim(kReportClaim, std::chrono::system_clock::now()).claimed)) {
+  if (!report_only && !WritesReport(summary, shard, folder)) {
     std::fprintf(stderr, "study: complete; the rank that completed it writes the report\n");
     return 0;
   }
   const double wall_s = StudyWallClock(folder);
   WriteStudyReport(spec, folder, wall_s);
-  claims.Release(kReportClaim);
   std::printf("report: %s\nstudy_wall_s: %.1f\n", (folder / "REPORT.md").c_str(), wall_s);
   return 0;
 }
