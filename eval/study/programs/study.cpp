@@ -63,9 +63,11 @@ bool WritesReport(const JobRunSummary& summary, const StudyShard& shard,
                   const std::filesystem::path& folder) {
   const bool nothing_to_run = summary.finished == 0 && summary.by_others == 0;
   if (nothing_to_run && shard.index == 0 && shard.count == 1) return true;
-  if (!summary.completed_study && !(nothing_to_run && shard.index == 0)) return false;
-  return CreateExclusively(ReportWrittenMarker(folder)) ||
-         !std::filesystem::exists(folder / "REPORT.md");
+  if (summary.completed_study) return CreateExclusively(ReportWrittenMarker(folder));
+  // Rank 0 of a rerun with nothing left: also when a writer died before its report was written.
+  return nothing_to_run && shard.index == 0 &&
+         (CreateExclusively(ReportWrittenMarker(folder)) ||
+          !std::filesystem::exists(folder / "REPORT.md"));
 }
 
 int Study(int argc, char** argv) {
