@@ -21,6 +21,7 @@ namespace {
 
 constexpr const char* kClaimExtension = ".claim";
 constexpr const char* kFailureFile = "failed";
+constexpr const char* kReportWrittenFile = "report.written";
 
 std::string UtcNow() {
   const std::time_t now = std::time(nullptr);
@@ -211,6 +212,14 @@ std::optional<std::string> JobClaims::FailureSince(const std::string& job, WallT
 void JobClaims::ClearFailure(const std::string& job) {
   std::filesystem::remove(JobFolder(job) / kFailureFile);
 }
+
+bool JobClaims::ClaimReportWriting() {
+  std::filesystem::create_directories(folder_);
+  const nlohmann::json record = {{"by", ToJson(self_)}, {"time", UtcNow()}};
+  return CreateExclusively(folder_ / kReportWrittenFile, record.dump(2) + "\n", self_);
+}
+
+void JobClaims::ForgetReportWriting() { std::filesystem::remove(folder_ / kReportWrittenFile); }
 
 bool JobClaims::Stale(const JobClaim& claim, WallTime heartbeat, WallTime now) const {
   if (OnThisHost(claim.holder)) {

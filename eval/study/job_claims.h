@@ -15,6 +15,8 @@
 //
 // A job that failed leaves CLAIMS/J/failed, so that the ranks running at the time block its
 // dependants as a one-machine run does; a rank started later retries it.
+//
+// CLAIMS/report.written marks that the study's last completion has its report writer.
 #pragma once
 
 #include <chrono>
@@ -78,6 +80,12 @@ class JobClaims {
 
   /// Removes the failure record of `job` (it is retried).
   void ClearFailure(const std::string& job);
+
+  /// Of the ranks that complete the study at the same moment, exactly one gets true: it writes
+  /// the report (CLAIMS/report.written, created exclusively, names it).
+  bool ClaimReportWriting();
+  /// The study is incomplete again (a rank starts on it): its next completion needs a report.
+  void ForgetReportWriting();
 
  private:
   std::filesystem::path JobFolder(const std::string& job) const;

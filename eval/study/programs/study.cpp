@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/job_claims.h"
 #include "eval/study/job_graph.h"
 #include "eval/study/job_runner.h"
 #include "eval/study/launcher_environment.h"
@@ -41,33 +42,17 @@ void SayShard(const StudyShard& shard) {
                static_cast<long long>(self.pid));
 }
 
-// Marks that this completion of the study has its report. Created exclusively, so that of the
-// ranks that complete the study at the same moment exactly one writes the report; removed when a
-// rank starts on an incomplete study, whose report will be out of date.
-std::filesystem::path ReportWrittenMarker(const std::filesystem::path& folder) {
-  return folder / "claims" / "report.written";
-}
-
-bool CreateExclusively(const std::filesystem::path& path) {
-  std::filesystem::create_directories(path.parent_path());
-  const int fd = open(path.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0644);
-  if (fd < 0) return false;
-  close(fd);
-  return true;
-}
-
 // The report is written once per completed study: by the rank whose job completed it, or, when no
 // job was left to run, by rank 0 (always on one machine, so a rerun prints it again; among ranks
 // only if nobody wrote it yet) or by --report.
 bool WritesReport(const JobRunSummary& summary, const StudyShard& shard,
-                  const std::filesystem::path& folder) {
+                  const std::filesystem::path& folder, JobClaims& claims) {
   const bool nothing_to_run = summary.finished == 0 && summary.by_others == 0;
   if (nothing_to_run && shard.index == 0 && shard.count == 1) return true;
-  if (summary.completed_study) return CreateExclusively(ReportWrittenMarker(folder));
+  if (summary.completed_study) return claims.ClaimReportWriting();
   // Rank 0 of a rerun with nothing left: also when a writer died before its report was written.
   return nothing_to_run && shard.index == 0 &&
-         (CreateExclusively(ReportWrittenMarker(folder)) ||
-          !std::filesystem::exists(folder / "REPORT.md"));
+         (claims.ClaimReportWriting() || !std::filesystem::exists(folder / "REPORT.md"));
 }
 
 int Study(int argc, char** argv) {
@@ -121,10 +106,11 @@ int Study(int argc, char** argv) {
   const std::filesystem::path folder = std::filesystem::absolute(out);
   const double start_s = UnixSeconds();
   JobRunSummary summary;
+  JobClaims claims(folder / "claims", CurrentProcess(), std::chrono::seconds(claim_timeout_s));
   if (!report_only) {
     SayShard(shard);
     const std::vector<StudyJob> graph = BuildJobGraph(spec, folder);
-    if (!AllJobsComplete(graph)) std::filesystem::remove(ReportWrittenMarker(folder));
+    if (!AllJobsComplete(graph)) claims.ForgetReportWriting();
     CheckJobConfigurations(graph, ProgramFolder());
     summary = RunJobs(graph, {jobs, ProgramFolder(), folder / "logs", folder / "claims",
                               std::chrono::seconds(claim_timeout_s), shard.index});
@@ -137,7 +123,7 @@ int Study(int argc, char** argv) {
   }
   if (summary.stopped) return kStoppedStatus;
   if (summary.failed > 0) return kJobsFailedStatus;
-  if (!report_only && !WritesReport(summary, shard, folder)) {
+  if (!report_only && !WritesReport(summary, shard, folder, claims)) {
     std::fprintf(stderr, "study: complete; the rank that completed it writes the report\n");
     return 0;
   }

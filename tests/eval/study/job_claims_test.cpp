@@ -187,5 +187,16 @@ TEST(JobClaimsTest, FailuresAreSeenByTheRanksRunningAtTheTime) {
   EXPECT_FALSE(mine.FailureSince("data", before));
 }
 
+TEST(JobClaimsTest, OneRankWritesTheReportOfACompletion) {
+  const TemporaryFolder folder;
+  JobClaims first(folder / "claims", OtherHost(1), kTimeout);
+  JobClaims second(folder / "claims", OtherHost(2), kTimeout);
+  EXPECT_TRUE(first.ClaimReportWriting());
+  EXPECT_FALSE(second.ClaimReportWriting());
+  EXPECT_FALSE(first.ClaimReportWriting());
+  second.ForgetReportWriting();  // the study grew: its next completion needs a report
+  EXPECT_TRUE(second.ClaimReportWriting());
+}
+
 }  // namespace
 }  // namespace colav
