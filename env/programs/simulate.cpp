@@ -15,7 +15,6 @@
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
-#include "src/finished_output.h"
 #include "src/number_flag.h"
 #include "src/output_path.h"
 
@@ -54,9 +53,8 @@ int Simulate(int argc, char** argv) {
                  "also write the scenario as a scenario file (e.g. to edit a training world)");
   app.add_option("--actions", actions_path, "actions file: header a0,a1, one row per step")
       ->required();
-  app.add_option("--out", trace_path, "trace file to write (CSV)")->required();
-  bool overwrite = false;
-  app.add_flag("--overwrite", overwrite, "replace an existing trace file");
+  app.add_option("--out", trace_path, "trace file to write (CSV; an existing one is replaced)")
+      ->required();
   app.add_option("--plot", plot_path, "also draw the scene and the track to this PNG");
   ReplayFlags replay_flags(app);
   const OptionsBinding<EnvironmentConfig> binding = EnvironmentBinding();
@@ -68,7 +66,6 @@ int Simulate(int argc, char** argv) {
   const Scenario scenario = ChosenScenario(scenario_path, *seed_option, training_seed);
   const auto actions = LoadActionsFile(actions_path);
   RequireWritableFile(trace_path, "--out");
-  RefuseToReplaceFinishedOutput({trace_path}, "--out", overwrite);
   if (!save_scenario_path.empty()) RequireWritableFile(save_scenario_path, "--save-scenario");
   if (!plot_path.empty()) RequireWritableFile(plot_path, "--plot");
   replay_flags.Check();
