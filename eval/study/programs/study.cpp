@@ -45,14 +45,13 @@ void SayShard(const StudyShard& shard) {
 // The report is written once per completed study: by the rank whose job completed it, or, when no
 // job was left to run, by rank 0 (always on one machine, so a rerun prints it again; among ranks
 // only if nobody wrote it yet) or by --report.
-bool WritesReport(const JobRunSummary& summary, const StudyShard& shard,
-                  const std::filesystem::path& folder, JobClaims& claims) {
+bool WritesReport(const JobRunSummary& summary, const StudyShard& shard, JobClaims& claims) {
   const bool nothing_to_run = summary.finished == 0 && summary.by_others == 0;
   if (nothing_to_run && shard.index == 0 && shard.count == 1) return true;
-  if (summary.completed_study) return claims.ClaimReportWriting();
-  // Rank 0 of a rerun with nothing left: also when a writer died before its report was written.
-  return nothing_to_run && shard.index == 0 &&
-         (claims.ClaimReportWriting() || !std::filesystem::exists(folder / "REPORT.md"));
+  // Among ranks, only the first to claim this completion's report writes it, even if it is still
+  // being written (a writer that died before finishing leaves it to `study --report`).
+  return (summary.completed_study || (nothing_to_run && shard.index == 0)) &&
+         claims.ClaimReportWriting();
 }
 
 int Study(int argc, char** argv) {
@@ -123,7 +122,7 @@ int Study(int argc, char** argv) {
   }
   if (summary.stopped) return kStoppedStatus;
   if (summary.failed > 0) return kJobsFailedStatus;
-  if (!report_only && !WritesReport(summary, shard, folder, claims)) {
+  if (!report_only && !WritesReport(summary, shard, claims)) {
     std::fprintf(stderr, "study: complete; the rank that completed it writes the report\n");
     return 0;
   }
