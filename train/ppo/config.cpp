@@ -47,6 +47,18 @@ std::vector<std::int64_t> ParseLayerSizes(const std::string& text) {
   return sizes;
 }
 
+// extractor.encoder_closeness: "env" (the environment's own transform) or a transform's name.
+constexpr const char* kEnvironmentCloseness = "env";
+
+std::optional<ClosenessTransform> ParseEncoderCloseness(const std::string& name) {
+  if (name == kEnvironmentCloseness) return std::nullopt;
+  return ParseClosenessTransform(name);
+}
+
+std::string EncoderClosenessName(const std::optional<ClosenessTransform>& closeness) {
+  return closeness ? ClosenessTransformName(*closeness) : kEnvironmentCloseness;
+}
+
 std::string LayerSizesText(const std::vector<std::int64_t>& sizes) {
   return fmt::format("{}", fmt::join(sizes, ","));
 }
@@ -105,6 +117,12 @@ void DeriveModelSeed(PpoRunOptions& options) {
 }
 
 }  // namespace
+
+EnvironmentConfig AuthorsTrainingEnvironment() {
+  EnvironmentConfig config;
+  config.closeness = ClosenessTransform::kLog;
+  return config;
+}
 
 OptionsBinding<PpoRunOptions> PpoRunBinding() {
   using Run = PpoRunOptions;
@@ -185,10 +203,12 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
              "vae-*: the pre-trained fc_mu (mu), or fc_mu re-drawn orthogonal x sqrt 2 with a "
              "ReLU, as the authors' agents had it (reference)",
              TextCodec<EncoderHead>{EncoderHeadName, ParseEncoderHead}, {"mu", "reference"})
-      .Bool(
-          "extractor.allow_encoder_mismatch",
-          [](Run & o) -> auto& { return o.allow_encoder_mismatch; },
-          "train although the encoder records another closeness transform than env.closeness")
+      .Coded(
+          "extractor.encoder_closeness", [](Run & o) -> auto& { return o.encoder_closeness; },
+          "vae-*: the closeness transform the encoder must have been trained on (env: "
+          "env.closeness); linear: the paper recipe, log closeness fed to a linear-trained VAE",
+          TextCodec<std::optional<ClosenessTransform>>{EncoderClosenessName, ParseEncoderCloseness},
+          {"env", "linear", "log"})
       .Number(
           "extractor.latent_dims", [](Run & o) -> auto& { return o.model.extractor.latent_dims; },
           "latent size the encoder must have", 1, 4096)

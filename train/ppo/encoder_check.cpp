@@ -2,6 +2,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include "env/environment_config.h"
 #include "env/observation_settings.h"
 #include "models/torchscript_export.h"
 #include "src/error.h"
@@ -13,20 +14,27 @@ void CheckEncoderObservationSettings(const PpoRunOptions& options) {
   if (extractor.kind == ExtractorKind::kBaseline) return;
   const std::string file = extractor.encoder.string();
   const std::optional<ObservationSettings> recorded = EncoderObservationSettings(extractor.encoder);
-  const ObservationSettings run = ObservationSettingsOf(options.env);
+  const ObservationSettings expected{options.encoder_closeness.value_or(options.env.closeness)};
   if (!recorded) {
     spdlog::warn("encoder file '{}' does not record its observation settings; assuming {}", file,
-                 DescribeObservationSettings(run));
+                 DescribeObservationSettings(expected));
     return;
   }
-  if (*recorded == run) return;
-  const std::string mismatch = "encoder file '" + file + "' was trained on " +
-                               DescribeObservationSettings(*recorded) + ", env has " +
-                               DescribeObservationSettings(run);
-  if (!options.allow_encoder_mismatch) {
-    throw UserError(mismatch + " (set env.closeness to match, or --allow-encoder-mismatch)");
+  if (*recorded == expected) {
+    if (expected != ObservationSettingsOf(options.env)) {
+      spdlog::info("encoder trained on {} fed {} (extractor.encoder_closeness: {})",
+                   DescribeObservationSettings(expected),
+                   DescribeObservationSettings(ObservationSettingsOf(options.env)),
+                   ClosenessTransformName(expected.closeness));
+    }
+    return;
   }
-  spdlog::warn("{}: training anyway (extractor.allow_encoder_mismatch)", mismatch);
+  throw UserError(
+      "encoder file '" + file + "' was trained on " + DescribeObservationSettings(*recorded) +
+      ", extractor.encoder_closeness expects " + DescribeObservationSettings(expected) +
+      " (env has " + DescribeObservationSettings(ObservationSettingsOf(options.env)) +
+      "); set extractor.encoder_closeness=" + ClosenessTransformName(recorded->closeness) +
+      " to train on it");
 }
 
 }  // namespace colav

@@ -52,8 +52,7 @@ int Main(int argc, char** argv) {
   config_flags.AddFlag("--encoder", "extractor.encoder");
   config_flags.AddSwitch("--locked", "extractor.locked", true, "freeze the pre-trained encoder");
   config_flags.AddSwitch("--unlocked", "extractor.locked", false, "fine-tune the encoder");
-  config_flags.AddSwitch("--allow-encoder-mismatch", "extractor.allow_encoder_mismatch", true,
-                         "train although the encoder records another env.closeness");
+  config_flags.AddFlag("--encoder-closeness", "extractor.encoder_closeness");
   config_flags.AddFlag("--steps", "ppo.total_steps");
   config_flags.AddFlag("--envs", "ppo.n_envs");
   config_flags.AddFlag("--seed", "train.seed");
