@@ -3,12 +3,15 @@
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 
 #include "env/environment_config.h"
 #include "env/observation_settings.h"
+#include "eval/collision_analysis.h"
 #include "eval/episode_runner.h"
 #include "eval/episode_table.h"
 #include "eval/evaluation_episodes.h"
@@ -224,6 +227,68 @@ void WriteReplays(std::vector<Policy>& policies, const std::vector<EvaluationEpi
   spdlog::info("wrote {} replay page(s) to {}", replayed.size(), (out / "replays").string());
 }
 
+// OUT/collisions.csv and OUT/collisions.md: every collision of every model, its episode re-run with
+// recording (the same run, as for replays), the obstacle named and avoidance searched.
+void AnalyseCollisions(std::vector<Policy>& policies,
+                       const std::vector<EvaluationEpisode>& episodes,
+                       const std::vector<std::vector<EpisodeOutcome>>& outcomes,
+                       const EnvironmentConfig& env, int threads,
+                       const std::filesystem::path& out) {
+  std::vector<EvaluationEpisode> collided;
+  for (std::size_t e = 0; e < episodes.size(); ++e) {
+    if (std::any_of(outcomes.begin(), outcomes.end(),
+                    [&](const auto& model) { return model[e].metrics.collision; })) {
+      collided.push_back(episodes[e]);
+    }
+  }
+  const auto runs = RunEpisodes(policies, collided, env, threads, {}, /*record_replays=*/true);
+  struct Job {
+    std::size_t model;
+    std::size_t episode;
+  };
+  std::vector<Job> jobs;
+  for (std::size_t m = 0; m < runs.size(); ++m) {
+    for (std::size_t e = 0; e < collided.size(); ++e) {
+      if (runs[m][e].metrics.collision) jobs.push_back({m, e});
+    }
+  }
+  std::vector<std::optional<CollisionAnalysis>> analyses(jobs.size());
+  ProgressBar progress("collisions", static_cast<std::int64_t>(jobs.size()), "collisions");
+  ThreadPool pool(threads + 1);  // the caller only shows progress
+  std::atomic<int> done{0};
+  pool.ParallelFor(
+      static_cast<int>(jobs.size()),
+      [&](int j) {
+        const std::vector<ReplayStep>& steps =
+            runs[jobs[j].model][jobs[j].episode].replay->runs[0].steps;
+        std::vector<std::array<float, kActionSize>> actions;
+        for (std::size_t k = 1; k < steps.size(); ++k) actions.push_back(steps[k].action);
+        analyses[j] = AnalyseCollision(collided[jobs[j].episode].scenario, actions);
+        ++done;
+      },
+      [&] { progress.Update(done); });
+  progress.Finish();
+  std::vector<CollisionCounts> counts(policies.size());
+  std::string csv = CollisionCsvHeader();
+  for (std::size_t j = 0; j < jobs.size(); ++j) {
+    const std::string& model = policies[jobs[j].model].name();
+    if (!analyses[j]) {
+      throw std::runtime_error(model + " on " + collided[jobs[j].episode].name +
+                               ": its recorded actions do not collide when replayed");
+    }
+    counts[jobs[j].model].collisions.push_back(*analyses[j]);
+    csv += CollisionCsvRow(model, collided[jobs[j].episode].name, *analyses[j]);
+  }
+  for (std::size_t m = 0; m < policies.size(); ++m) {
+    counts[m].model = policies[m].name();
+    counts[m].episodes = static_cast<int>(episodes.size());
+  }
+  WriteTextFileAtomically(out / "collisions.csv", csv);
+  const std::string markdown = CollisionSummaryMarkdown(counts);
+  WriteTextFileAtomically(out / "collisions.md", markdown);
+  std::cout << "\n" << markdown;
+}
+
 int Evaluate(int argc, char** argv) {
   CLI::App app{
       "Runs trained policies (TorchScript policy.pt) with deterministic actions on the shared "
@@ -251,6 +316,11 @@ int Evaluate(int argc, char** argv) {
                "also write replay pages (OUT/replays/<scenario>.html, every model in each): every "
                "scenario file, or the test scenarios chosen by --replay-first and "
                "--replay-collisions");
+  bool analyse_collisions = false;
+  app.add_flag("--analyse-collisions", analyse_collisions,
+               "also replay every collision, name the obstacle hit, and search 1,065 manoeuvres "
+               "from the step it came within 150 m and from 10, 30 and 60 s before the contact: "
+               "OUT/collisions.csv, OUT/collisions.md");
   AddNumberFlag(app, "--replay-first", replay_choice.first,
                 "with --replay: the first this many test scenarios", 0, 100000);
   AddNumberFlag(app, "--replay-collisions", replay_choice.collided,
@@ -314,6 +384,9 @@ int Evaluate(int argc, char** argv) {
   if (replay_choice.enabled) {
     WriteReplays(policies, episodes, ReplayedEpisodes(replay_choice, on_files, outcomes),
                  options.env, threads, folder.path());
+  }
+  if (analyse_collisions) {
+    AnalyseCollisions(policies, episodes, outcomes, options.env, threads, folder.path());
   }
   if (on_files) {
     PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());
