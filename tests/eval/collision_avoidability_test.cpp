@@ -7,6 +7,8 @@
 
 #include <cmath>
 
+#include "env/world.h"
+
 namespace colav {
 namespace {
 
@@ -55,6 +57,45 @@ TEST(CollisionAvoidabilityTest, StaticObstaclesCountAndTheHorizonBoundsTheSearch
   EXPECT_TRUE(search.StaysClear(kAtRest, full_ahead, 20));
   EXPECT_FALSE(search.StaysClear(kAtRest, full_ahead, 300));
   EXPECT_TRUE(search.FindClearManoeuvre(kAtRest, 300).has_value());
+}
+
+// Whether the world, stepped on under `manoeuvre`, stays collision-free for `steps` steps.
+bool WorldStaysClear(World& world, const Manoeuvre& manoeuvre, int steps) {
+  for (int step = 0; step < steps; ++step) {
+    const auto& action = step < manoeuvre.switch_after ? manoeuvre.first : manoeuvre.second;
+    world.Advance(CybershipModel::ForceFromAction(action[0], action[1]));
+    if (world.collision()) return false;
+  }
+  return true;
+}
+
+TEST(CollisionAvoidabilityTest, TheSearchAgreesWithTheWorldItStartsFrom) {
+  // A vessel closing head-on at 1 m/s from 150 m; the world has drifted for 100 s.
+  Scenario scenario;
+  scenario.waypoints = {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(400.0, 0.0)};
+  VesselObstacleSpec vessel;
+  vessel.position = Eigen::Vector2d(150.0, 0.0);
+  vessel.width = 10.0;
+  vessel.course = M_PI;
+  vessel.speed = 1.0;
+  scenario.dynamic_obstacles = {vessel};
+  constexpr int kDrift = 100;
+  constexpr int kHorizon = 200;
+  const Manoeuvre drift{{-1.0, 0.0}, 1 << 30, {-1.0, 0.0}};
+  World world;
+  world.Load(scenario);
+  for (int step = 0; step < kDrift; ++step) {
+    world.Advance(CybershipModel::ForceFromAction(-1.0, 0.0));
+  }
+  const AvoidanceSearch search(world.static_obstacles(), world.moving_obstacles());
+  const std::optional<Manoeuvre> found = search.FindClearManoeuvre(world.vessel(), kHorizon);
+  ASSERT_TRUE(found.has_value());
+  ASSERT_FALSE(search.StaysClear(world.vessel(), drift, kHorizon));
+
+  World drifting;
+  drifting.Load(scenario);
+  EXPECT_FALSE(WorldStaysClear(drifting, drift, kDrift + kHorizon));
+  EXPECT_TRUE(WorldStaysClear(world, *found, kHorizon));
 }
 
 }  // namespace
