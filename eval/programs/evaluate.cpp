@@ -188,6 +188,20 @@ struct ReplayChoice {
   int collided = 3;  ///< and the first other test scenarios in which some model collided
 };
 
+bool SomeModelCollided(const std::vector<std::vector<EpisodeOutcome>>& outcomes,
+                       std::size_t episode) {
+  return std::any_of(outcomes.begin(), outcomes.end(),
+                     [&](const auto& model) { return model[episode].metrics.collision; });
+}
+
+// The actions of a one-run replay: actions[k] led from step k to step k + 1.
+std::vector<std::array<float, kActionSize>> RecordedActions(const Replay& replay) {
+  const std::vector<ReplayStep>& steps = replay.runs.front().steps;
+  std::vector<std::array<float, kActionSize>> actions;
+  for (std::size_t k = 1; k < steps.size(); ++k) actions.push_back(steps[k].action);
+  return actions;
+}
+
 // Indices of the episodes to replay: every scenario file; of the test scenarios, the first
 // `first` and then the first `collided` others in which some model collided.
 std::vector<int> ReplayedEpisodes(const ReplayChoice& choice, bool on_files,
@@ -196,12 +210,9 @@ std::vector<int> ReplayedEpisodes(const ReplayChoice& choice, bool on_files,
   std::vector<int> chosen;
   int collided = 0;
   for (int e = 0; e < count; ++e) {
-    const bool any_collision =
-        std::any_of(outcomes.begin(), outcomes.end(),
-                    [&](const auto& model) { return model[e].metrics.collision; });
     if (on_files || e < choice.first) {
       chosen.push_back(e);
-    } else if (any_collision && collided < choice.collided) {
+    } else if (SomeModelCollided(outcomes, e) && collided < choice.collided) {
       chosen.push_back(e);
       ++collided;
     }
@@ -236,10 +247,7 @@ void AnalyseCollisions(std::vector<Policy>& policies,
                        const std::filesystem::path& out) {
   std::vector<EvaluationEpisode> collided;
   for (std::size_t e = 0; e < episodes.size(); ++e) {
-    if (std::any_of(outcomes.begin(), outcomes.end(),
-                    [&](const auto& model) { return model[e].metrics.collision; })) {
-      collided.push_back(episodes[e]);
-    }
+    if (SomeModelCollided(outcomes, e)) collided.push_back(episodes[e]);
   }
   const auto runs = RunEpisodes(policies, collided, env, threads, {}, /*record_replays=*/true);
   struct Job {
@@ -259,11 +267,9 @@ void AnalyseCollisions(std::vector<Policy>& policies,
   pool.ParallelFor(
       static_cast<int>(jobs.size()),
       [&](int j) {
-        const std::vector<ReplayStep>& steps =
-            runs[jobs[j].model][jobs[j].episode].replay->runs[0].steps;
-        std::vector<std::array<float, kActionSize>> actions;
-        for (std::size_t k = 1; k < steps.size(); ++k) actions.push_back(steps[k].action);
-        analyses[j] = AnalyseCollision(collided[jobs[j].episode].scenario, actions);
+        analyses[j] =
+            AnalyseCollision(collided[jobs[j].episode].scenario,
+                             RecordedActions(*runs[jobs[j].model][jobs[j].episode].replay));
         ++done;
       },
       [&] { progress.Update(done); });
