@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include "tests/eval/head_on_encounter.h"
 
 namespace colav {
 namespace {
@@ -14,15 +14,7 @@ namespace {
 using ::testing::HasSubstr;
 
 Scenario HeadOn() {
-  Scenario scenario;
-  scenario.name = "head-on";
-  scenario.waypoints = {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(400.0, 0.0)};
-  VesselObstacleSpec vessel;
-  vessel.position = Eigen::Vector2d(300.0, 0.0);
-  vessel.width = 10.0;
-  vessel.course = M_PI;
-  vessel.speed = 2.0;
-  scenario.dynamic_obstacles = {vessel};
+  Scenario scenario = testing_util::HeadOnEncounter(300.0, 2.0);
   scenario.static_obstacles = {CircleSpec{Eigen::Vector2d(0.0, -300.0), 10.0}};
   return scenario;
 }

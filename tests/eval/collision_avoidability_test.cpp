@@ -1,13 +1,12 @@
 // The manoeuvre search against cases whose answer follows from the vessel's top speed (0.58 m/s,
-// forward only): a wide vessel overtaking ours at 2 m/s from 10 m astern cannot be escaped, a
+// forward only): a wide vessel overtaking ours at 2 m/s from 25 m astern cannot be escaped, a
 // small one closing at 0.3 m/s from 200 m astern can be outrun, and drifting lets it hit.
 #include "eval/collision_avoidability.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
-
 #include "env/world.h"
+#include "tests/eval/head_on_encounter.h"
 
 namespace colav {
 namespace {
@@ -71,14 +70,7 @@ bool WorldStaysClear(World& world, const Manoeuvre& manoeuvre, int steps) {
 
 TEST(CollisionAvoidabilityTest, TheSearchAgreesWithTheWorldItStartsFrom) {
   // A vessel closing head-on at 1 m/s from 150 m; the world has drifted for 100 s.
-  Scenario scenario;
-  scenario.waypoints = {Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(400.0, 0.0)};
-  VesselObstacleSpec vessel;
-  vessel.position = Eigen::Vector2d(150.0, 0.0);
-  vessel.width = 10.0;
-  vessel.course = M_PI;
-  vessel.speed = 1.0;
-  scenario.dynamic_obstacles = {vessel};
+  const Scenario scenario = testing_util::HeadOnEncounter(150.0, 1.0);
   constexpr int kDrift = 100;
   constexpr int kHorizon = 200;
   const Manoeuvre drift{{-1.0, 0.0}, 1 << 30, {-1.0, 0.0}};
