@@ -112,15 +112,17 @@ sys.exit(0 if a.keys() == b.keys() and all(torch.equal(a[k], b[k]) for k in a) e
 PY
 fi
 
-# --- train_vae: 2 seeds of 8 epochs (about 0.3 s each) on a small dataset. A clean stop ends the
-# epoch in progress; a SIGKILL loses it.
+# --- train_vae: 2 seeds of 12 epochs (about 0.05 s per epoch) on a small dataset. A clean stop ends
+# the epoch in progress; a SIGKILL loses it. The SIGKILL comes 0.05 s into the third session, which
+# has 10 epochs of seed 1 left: with fewer, the run could finish first (it did once, at 8 epochs
+# and 0.3 s), and the last resume would meet a complete run folder.
 "$BIN/generate_dataset" --out scans.h5 --sim-scans 2000 --synthetic-scans 2000 >/dev/null 2>&1 ||
   fail "generate_dataset failed"
-VAE=("$BIN/train_vae" --data scans.h5 --seeds 2 --epochs 8 --set figures.enabled=false)
+VAE=("$BIN/train_vae" --data scans.h5 --seeds 2 --epochs 12 --set figures.enabled=false)
 "${VAE[@]}" --out vae_whole >/dev/null 2>&1 || fail "uninterrupted train_vae run failed"
 interrupt INT vae_parts/seed_0/losses.csv 0 "${VAE[@]}" --out vae_parts
 interrupt TERM vae_parts/seed_0/encoder.pt 0.1 "${VAE[@]}" --out vae_parts
-interrupt KILL vae_parts/train_vae.log:3 0.3 "${VAE[@]}" --out vae_parts
+interrupt KILL vae_parts/train_vae.log:3 0.05 "${VAE[@]}" --out vae_parts
 "${VAE[@]}" --out vae_parts >/dev/null 2>&1 || fail "the last resume of train_vae failed"
 for seed in seed_0 seed_1; do
   same_columns "vae_whole/$seed/losses.csv" "vae_parts/$seed/losses.csv" 1-5  # then seconds
