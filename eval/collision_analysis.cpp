@@ -49,21 +49,23 @@ std::vector<double> ObstacleDistances(const World& world) {
   return distances;
 }
 
-void Advance(World& world, const std::array<float, kActionSize>& action) {
-  world.Advance(CybershipModel::ForceFromAction(action[0], action[1]));
+// The moving vessels after `step` steps: they hold their course whatever our vessel does, so
+// they are advanced as World::Advance advances them, without replaying the episode.
+std::vector<MovingObstacle> MovingObstaclesAt(const Scenario& scenario, int step) {
+  std::vector<MovingObstacle> vessels;
+  for (const VesselObstacleSpec& spec : scenario.dynamic_obstacles) {
+    vessels.emplace_back(spec);
+    for (int k = 0; k < step; ++k) vessels.back().Advance(kTimeStep);
+  }
+  return vessels;
 }
 
-// Whether some candidate manoeuvre, started after `start` steps of the episode, stays clear
-// until kClearAfterContact steps after the contact.
-bool AvoidableFrom(const Scenario& scenario,
-                   const std::vector<std::array<float, kActionSize>>& actions, int start,
+// Whether some candidate manoeuvre, started after `start` steps of the episode from our vessel's
+// state then, stays clear until kClearAfterContact steps after the contact.
+bool AvoidableFrom(const Scenario& scenario, const VesselState& vessel, int start,
                    int contact_step) {
-  World world;
-  world.Load(scenario);
-  for (int step = 0; step < start; ++step) Advance(world, actions[step]);
-  const AvoidanceSearch search(world.static_obstacles(), world.moving_obstacles());
-  return search.FindClearManoeuvre(world.vessel(), contact_step - start + kClearAfterContact)
-      .has_value();
+  const AvoidanceSearch search(scenario.static_obstacles, MovingObstaclesAt(scenario, start));
+  return search.FindClearManoeuvre(vessel, contact_step - start + kClearAfterContact).has_value();
 }
 
 }  // namespace
@@ -73,10 +75,12 @@ std::optional<CollisionAnalysis> AnalyseCollision(
   World world;
   world.Load(scenario);
   std::vector<std::vector<double>> distances = {ObstacleDistances(world)};
+  std::vector<VesselState> vessel_states = {world.vessel()};
   CollisionAnalysis analysis;
   for (std::size_t step = 0; step < actions.size() && !world.collision(); ++step) {
-    Advance(world, actions[step]);
+    world.Advance(CybershipModel::ForceFromAction(actions[step][0], actions[step][1]));
     distances.push_back(ObstacleDistances(world));
+    vessel_states.push_back(world.vessel());
   }
   if (!world.collision()) return std::nullopt;
   analysis.contact_step = static_cast<int>(distances.size()) - 1;
@@ -96,11 +100,13 @@ std::optional<CollisionAnalysis> AnalyseCollision(
   analysis.bearing_deg =
       WrapAngle(std::atan2(offset.y(), offset.x()) - world.vessel()[2]) * kRadiansToDegrees;
   while (distances[analysis.detection_step][hit] > RangeFinder::kRange) ++analysis.detection_step;
-  analysis.avoidable_from_detection =
-      AvoidableFrom(scenario, actions, analysis.detection_step, analysis.contact_step);
+  const auto avoidable_from = [&](int start) {
+    return AvoidableFrom(scenario, vessel_states[start], start, analysis.contact_step);
+  };
+  analysis.avoidable_from_detection = avoidable_from(analysis.detection_step);
   for (std::size_t k = 0; k < kCollisionLeadTimes.size(); ++k) {
-    const int start = std::max(0, analysis.contact_step - kCollisionLeadTimes[k]);
-    analysis.avoidable_before[k] = AvoidableFrom(scenario, actions, start, analysis.contact_step);
+    analysis.avoidable_before[k] =
+        avoidable_from(std::max(0, analysis.contact_step - kCollisionLeadTimes[k]));
   }
   return analysis;
 }

@@ -65,7 +65,8 @@ bool AvoidanceSearch::StaysClear(const VesselState& vessel, const Manoeuvre& man
 
 std::optional<Manoeuvre> AvoidanceSearch::FindClearManoeuvre(const VesselState& vessel,
                                                              int steps) const {
-  for (const Manoeuvre& manoeuvre : CandidateManoeuvres()) {
+  static const std::vector<Manoeuvre> kCandidates = CandidateManoeuvres();
+  for (const Manoeuvre& manoeuvre : kCandidates) {
     if (StaysClear(vessel, manoeuvre, steps)) return manoeuvre;
   }
   return std::nullopt;
