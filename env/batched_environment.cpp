@@ -17,7 +17,7 @@ namespace colav {
 struct BatchedEnvironment::NextEpisode {
   enum State : int { kEmpty, kQueued, kBuilding, kReady };
   std::unique_ptr<Environment> environment;
-  std::vector<float> observation = std::vector<float>(kObservationSize);
+  std::vector<float> observation;
   std::uint64_t seed = 0;  ///< of the episode it holds or is to hold
   std::atomic<int> state{kEmpty};
 };
@@ -54,10 +54,11 @@ BatchedEnvironment::BatchedEnvironment(
     const EnvironmentConfig& config, int num_envs, int num_threads, std::uint64_t seed,
     const std::vector<std::shared_ptr<const ScenarioSource>>& sources)
     : num_envs_(num_envs),
+      observation_size_(ObservationSize(config)),
       seed_(seed),
       histories_(num_envs),
       pool_(std::make_unique<ThreadPool>(std::min(num_threads, num_envs))),
-      observations_(static_cast<std::size_t>(num_envs) * kObservationSize, 0.0f),
+      observations_(static_cast<std::size_t>(num_envs) * observation_size_, 0.0f),
       final_observations_(observations_.size(), 0.0f),
       rewards_(num_envs, 0.0f),
       terminated_(num_envs, 0),
@@ -67,6 +68,7 @@ BatchedEnvironment::BatchedEnvironment(
     worlds_.push_back(std::make_unique<Environment>(config, source));
     next_episodes_.push_back(std::make_unique<NextEpisode>());
     next_episodes_.back()->environment = std::make_unique<Environment>(config, source);
+    next_episodes_.back()->observation.resize(observation_size_);
   }
 }
 
@@ -96,7 +98,7 @@ void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed, const BatchedO
   }
   started_ = true;
   pool_->ParallelFor(num_envs_, [this, &outputs](int i) {
-    StartEpisode(i, &outputs.observations[static_cast<std::size_t>(i) * kObservationSize]);
+    StartEpisode(i, &outputs.observations[static_cast<std::size_t>(i) * observation_size_]);
     outputs.terminated[i] = outputs.truncated[i] = 0;
     outputs.rewards[i] = 0.0f;
     finished_episodes_[i].reset();
@@ -122,7 +124,7 @@ void BatchedEnvironment::StepAll(const Action* actions, const BatchedOutputs& ou
 
 template <typename Action>
 void BatchedEnvironment::StepWorld(int world, const Action* action, const BatchedOutputs& outputs) {
-  const std::size_t row = static_cast<std::size_t>(world) * kObservationSize;
+  const std::size_t row = static_cast<std::size_t>(world) * observation_size_;
   float* observation = &outputs.observations[row];
   const double clipped[kActionSize] = {std::clamp<double>(action[0], -1.0, 1.0),
                                        std::clamp<double>(action[1], -1.0, 1.0)};
@@ -134,7 +136,7 @@ void BatchedEnvironment::StepWorld(int world, const Action* action, const Batche
   outputs.truncated[world] = result.truncated;
   finished_episodes_[world] = result.episode;
   if (result.terminated || result.truncated) {
-    std::copy(observation, observation + kObservationSize, &outputs.final_observations[row]);
+    std::copy(observation, observation + observation_size_, &outputs.final_observations[row]);
     ++histories_[world].episode;
     StartEpisode(world, observation);
   }
@@ -168,7 +170,7 @@ void BatchedEnvironment::ReplayWorld(int world, const WorldHistory& history) {
     throw std::invalid_argument("world " + std::to_string(world) +
                                 ": recorded actions that no step applies");
   }
-  float* observation = &observations_[static_cast<std::size_t>(world) * kObservationSize];
+  float* observation = &observations_[static_cast<std::size_t>(world) * observation_size_];
   histories_[world].episode = history.episode;
   StartEpisode(world, observation);
   for (std::size_t k = 0; k < actions.size(); k += kActionSize) {

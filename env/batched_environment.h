@@ -33,8 +33,8 @@ struct WorldHistory {
 /// Where a Reset or Step writes its results: num_envs rows each, in memory the caller owns (a
 /// Python binding's numpy arrays, say), so results need not be copied out.
 struct BatchedOutputs {
-  float* observations = nullptr;        ///< num_envs x kObservationSize
-  float* final_observations = nullptr;  ///< num_envs x kObservationSize; rows valid where done
+  float* observations = nullptr;        ///< num_envs x ObservationSize(config)
+  float* final_observations = nullptr;  ///< num_envs x ObservationSize(config); valid where done
   float* rewards = nullptr;             ///< num_envs
   std::uint8_t* terminated = nullptr;   ///< num_envs, 0 or 1
   std::uint8_t* truncated = nullptr;    ///< num_envs, 0 or 1
@@ -59,6 +59,8 @@ class BatchedEnvironment {
   BatchedEnvironment& operator=(const BatchedEnvironment&) = delete;
 
   int num_envs() const { return num_envs_; }
+  /// Floats per observation row: ObservationSize(config).
+  int observation_size() const { return observation_size_; }
 
   /// Starts a new episode in every world: episode 0 on the first call, then the next episode of
   /// each world (a running one is abandoned). With a seed, the worlds start over from episode 0
@@ -86,7 +88,8 @@ class BatchedEnvironment {
   void Restore(const std::vector<WorldHistory>& histories);
 
   // The results of the last Reset or Step that wrote to the environment's own buffers.
-  const float* observations() const { return observations_.data(); }  ///< num_envs x 186
+  /// num_envs x observation_size()
+  const float* observations() const { return observations_.data(); }
   const float* final_observations() const {
     return final_observations_.data();
   }  ///< valid where done
@@ -121,6 +124,7 @@ class BatchedEnvironment {
   void ReplayWorld(int world, const WorldHistory& history);
 
   int num_envs_;
+  int observation_size_;
   std::uint64_t seed_;
   bool started_ = false;
   std::vector<std::unique_ptr<Environment>> worlds_;

@@ -14,13 +14,25 @@ constexpr double kCteObservationScale = 100.0;
 }  // namespace
 
 Environment::Environment(EnvironmentConfig config, std::shared_ptr<const ScenarioSource> source)
-    : config_(config), source_(std::move(source)) {}
+    : config_(config),
+      source_(std::move(source)),
+      scan_ring_(config_.scan_history == 0
+                     ? 0
+                     : static_cast<std::size_t>(config_.scan_history) *
+                               config_.scan_history_interval * kNumRays +
+                           kNumRays) {}
 
 void Environment::Reset(std::uint64_t seed, float* observation) {
   world_.Load(source_->Make(seed));
   steps_ = 0;
   cumulative_reward_ = 0.0;
   sum_abs_cte_ = 0.0;
+  if (!scan_ring_.empty()) {  // every earlier scan is the first one
+    WriteCloseness(scan_ring_.data());
+    for (auto slot = scan_ring_.begin() + kNumRays; slot != scan_ring_.end(); slot += kNumRays) {
+      std::copy_n(scan_ring_.begin(), kNumRays, slot);
+    }
+  }
   WriteObservation(observation);
 }
 
@@ -57,7 +69,7 @@ StepResult Environment::Step(const double* action, float* observation) {
   return result;
 }
 
-void Environment::WriteObservation(float* observation) const {
+void Environment::WriteObservation(float* observation) {
   const VesselState& vessel = world_.vessel();
   const NavigationState& nav = world_.navigation();
   observation[0] = static_cast<float>(vessel[3]);
@@ -66,9 +78,26 @@ void Environment::WriteObservation(float* observation) const {
   observation[3] = static_cast<float>(nav.cross_track_error / kCteObservationScale);
   observation[4] = static_cast<float>(nav.heading_error);
   observation[5] = static_cast<float>(nav.look_ahead_heading_error);
+  float* scans = observation + kNavigationSize;
+  if (scan_ring_.empty()) {
+    WriteCloseness(scans);
+    return;
+  }
+  const std::int64_t slots = static_cast<std::int64_t>(scan_ring_.size()) / kNumRays;
+  const auto slot = [&](std::int64_t step) {
+    return scan_ring_.begin() + ((step % slots + slots) % slots) * kNumRays;
+  };
+  WriteCloseness(&*slot(steps_));
+  for (int k = 0; k <= config_.scan_history; ++k) {
+    std::copy_n(slot(steps_ - std::int64_t{k} * config_.scan_history_interval), kNumRays,
+                scans + static_cast<std::ptrdiff_t>(k) * kNumRays);
+  }
+}
+
+void Environment::WriteCloseness(float* closeness) const {
   const auto& ranges = world_.ranges();
   for (int i = 0; i < kNumRays; ++i) {
-    observation[kNavigationSize + i] = static_cast<float>(Closeness(ranges[i], config_.closeness));
+    closeness[i] = static_cast<float>(Closeness(ranges[i], config_.closeness));
   }
 }
 

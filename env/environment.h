@@ -27,11 +27,11 @@ class Environment {
  public:
   Environment(EnvironmentConfig config, std::shared_ptr<const ScenarioSource> source);
 
-  /// Starts the episode of scenario source->Make(seed); writes kObservationSize floats.
+  /// Starts the episode of scenario source->Make(seed); writes ObservationSize(config) floats.
   void Reset(std::uint64_t seed, float* observation);
 
   /// Advances one second under action (kActionSize values, clipped to [-1, 1]); writes the new
-  /// observation. Must not be called after the episode ended without a Reset.
+  /// observation (ObservationSize(config) floats). Must not be called after the episode ended without a Reset.
   StepResult Step(const double* action, float* observation);
 
   /// The simulated world (path, vessel, obstacles, last ranges), for traces and pictures.
@@ -39,7 +39,9 @@ class Environment {
   const EnvironmentConfig& config() const { return config_; }
 
  private:
-  void WriteObservation(float* observation) const;
+  void WriteObservation(float* observation);
+  /// The closeness of the current ranges, at `closeness` (kNumRays floats).
+  void WriteCloseness(float* closeness) const;
 
   EnvironmentConfig config_;
   std::shared_ptr<const ScenarioSource> source_;
@@ -47,6 +49,9 @@ class Environment {
   std::int64_t steps_ = 0;
   double cumulative_reward_ = 0.0;
   double sum_abs_cte_ = 0.0;
+  /// With a scan history: the last scan_history * scan_history_interval + 1 scans, the scan of
+  /// step t in slot t modulo their number.
+  std::vector<float> scan_ring_;
 };
 
 }  // namespace colav

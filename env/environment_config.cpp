@@ -3,6 +3,13 @@
 #include "src/error.h"
 
 namespace colav {
+namespace {
+
+// Bounds of the scan history: a ring of at most 16 x 100 scans (1.1 MB) per world.
+constexpr int kMaxScanHistory = 15;
+constexpr int kMaxScanHistoryInterval = 100;
+
+}  // namespace
 
 ClosenessTransform ParseClosenessTransform(const std::string& name) {
   if (name == "linear") return ClosenessTransform::kLinear;
@@ -33,7 +40,12 @@ OptionsBinding<EnvironmentConfig> EnvironmentBinding() {
       .Number("env.goal_progress", &Env::goal_progress,
               "goal reached when progress s*/L reaches this", 0.0, 2.0)
       .Number("env.min_cumulative_reward", &Env::min_cumulative_reward,
-              "training episodes end below this cumulative reward");
+              "training episodes end below this cumulative reward")
+      .Number("env.scan_history", &Env::scan_history,
+              "earlier range scans appended to the observation (0: the paper's observation)", 0,
+              kMaxScanHistory)
+      .Number("env.scan_history_interval", &Env::scan_history_interval,
+              "steps between two scans of that history", 1, kMaxScanHistoryInterval);
   return binding;
 }
 

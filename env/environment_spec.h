@@ -12,7 +12,8 @@ namespace colav {
 inline constexpr int kNumRays = 180;
 /// Navigation features: [u, v, r, cte/100, heading error, look-ahead heading error].
 inline constexpr int kNavigationSize = 6;
-/// Observation = navigation features (indices 0-5) then 180 closeness values (indices 6-185).
+/// The paper's observation = navigation features (indices 0-5) then 180 closeness values
+/// (indices 6-185). With a scan history (EnvironmentConfig::scan_history) earlier scans follow.
 inline constexpr int kObservationSize = kNavigationSize + kNumRays;
 /// Actions: [thrust in [-1, 1] -> 0..2 N forward, yaw moment in [-1, 1] -> +-0.15 N m].
 inline constexpr int kActionSize = 2;
@@ -35,7 +36,21 @@ struct EnvironmentConfig {
   double goal_progress = 0.99;
   /// Training episodes end when the cumulative reward drops below this.
   double min_cumulative_reward = -2000.0;
+  /// Earlier range scans appended to the observation, so that a policy can see other vessels
+  /// move (frame stacking); 0 is the paper's observation.
+  int scan_history = 0;
+  /// Steps between two consecutive scans of that history.
+  int scan_history_interval = 5;
 };
+
+/// Range scans in an observation: the current one, then the history, newest first. Before an
+/// episode has run long enough, the missing earlier scans are its first scan.
+inline int ScansPerObservation(const EnvironmentConfig& config) { return 1 + config.scan_history; }
+
+/// Floats in an observation: the navigation features, then kNumRays per scan.
+inline int ObservationSize(const EnvironmentConfig& config) {
+  return kNavigationSize + kNumRays * ScansPerObservation(config);
+}
 
 /// Record of a finished episode (reference-simulator 9.1, plus goal reached).
 struct EpisodeMetrics {

@@ -66,13 +66,14 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
   for (int m = 0; m < num_models; ++m) {
     const EnvironmentConfig policy_config = WithObservationSettings(
         config, policies[first + m].SettingsOr(ObservationSettingsOf(config)));
-    observations.push_back(torch::zeros({num_episodes, kObservationSize}));
+    const int observation_size = ObservationSize(policy_config);
+    observations.push_back(torch::zeros({num_episodes, observation_size}));
     for (int e = 0; e < num_episodes; ++e) {
       Lane& lane = lanes[m * num_episodes + e];
       const EvaluationEpisode& episode = episodes[e];
       lane.env = std::make_unique<Environment>(
           policy_config, std::make_shared<FixedScenarioSource>(episode.scenario));
-      lane.observation = observations[m].data_ptr<float>() + e * kObservationSize;
+      lane.observation = observations[m].data_ptr<float>() + e * observation_size;
       lane.env->Reset(episode.seed.value_or(0), lane.observation);
       lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
       lane.outcome.cumulative_rewards.push_back(0.0);

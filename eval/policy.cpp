@@ -51,11 +51,12 @@ Policy::Policy(const std::filesystem::path& path, std::string name)
   module_.eval();
   ReadOwnSettings();
   // Probe with two batch sizes: evaluation runs many episodes through one forward call.
+  const int observation_size = ObservationSize(SettingsOr(ObservationSettings{}));
   for (const std::int64_t batch : {1, 2}) {
-    const torch::Tensor actions = Forward(torch::zeros({batch, kObservationSize}));
+    const torch::Tensor actions = Forward(torch::zeros({batch, observation_size}));
     if (actions.dim() != 2 || actions.size(0) != batch || actions.size(1) != kActionSize) {
       throw UserError(path.string() + ": forward(obs [" + std::to_string(batch) + ", " +
-                      std::to_string(kObservationSize) + "]) gave actions of shape " +
+                      std::to_string(observation_size) + "]) gave actions of shape " +
                       ShapeText(actions) + ", expected [" + std::to_string(batch) + ", " +
                       std::to_string(kActionSize) + "]");
     }

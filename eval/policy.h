@@ -1,8 +1,8 @@
 // A trained agent as the evaluation sees it: a TorchScript policy file (spec interfaces.md,
-// policy.pt: forward(obs float32 [B, 186]) -> deterministic action [B, 2] in [-1, 1]) and the
-// observation settings it was trained with: recorded in the file (models/observation_settings_
-// record.h), else in a sidecar file "<policy file>.yaml" beside it (spec interfaces.md,
-// "Observation settings travel with models").
+// policy.pt: forward(obs float32 [B, 186 + 180 * scan_history]) -> deterministic action [B, 2]
+// in [-1, 1]) and the observation settings it was trained with: recorded in the file
+// (models/observation_settings_record.h), else in a sidecar file "<policy file>.yaml" beside it
+// (spec interfaces.md, "Observation settings travel with models").
 #pragma once
 
 #include <torch/script.h>
@@ -19,11 +19,12 @@ namespace colav {
 class Policy {
  public:
   /// Loads and checks `path`: it must exist, be TorchScript with a forward method, and map
-  /// observations [1, 186] and [2, 186] to finite actions [1, 2] and [2, 2]. Anything else is a
+  /// observations [1, n] and [2, n] (n = ObservationSize of its settings, 186 without them) to
+  /// finite actions [1, 2] and [2, 2]. Anything else is a
   /// one-line UserError naming the file; so is a malformed settings record or sidecar.
   Policy(const std::filesystem::path& path, std::string name);
 
-  /// Deterministic actions [B, 2] for observations [B, 186], clipped to [-1, 1]. A failing
+  /// Deterministic actions [B, 2] for observations [B, n], clipped to [-1, 1]. A failing
   /// forward or a non-finite action is a UserError naming the file.
   torch::Tensor Act(const torch::Tensor& observations);
 

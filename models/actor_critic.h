@@ -43,7 +43,8 @@ class ActorCriticImpl : public torch::nn::Module {
  public:
   explicit ActorCriticImpl(ActorCriticOptions options);
 
-  /// observations [B, 186] -> (action mean [B, 2], value [B, 1]).
+  /// observations [B, 6 + 180 * scans] (FeatureExtractorImpl::observation_size()) ->
+  /// (action mean [B, 2], value [B, 1]).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
 
   /// The parameters the optimiser updates: all but those of a locked encoder, in module order.

@@ -40,11 +40,24 @@ kernels::CircularConvShape ConvShape(const torch::nn::detail::ConvNdOptions<1>& 
           length};
 }
 
-// Transposes `count` rows of `width` values (row-major) into feature-major [width, count].
-void GatherRows(const float* const* rows, int count, int offset, int width, float* out) {
+// Transposes `width` values from `offset` of `count` rows (row-major) into columns 0..count-1 of
+// the feature-major [width, stride] array `out`.
+void GatherRows(const float* const* rows, int count, int offset, int width, int stride,
+                float* out) {
   for (int b = 0; b < count; ++b) {
     const float* row = rows[b] + offset;
-    for (int i = 0; i < width; ++i) out[i * count + b] = row[i];
+    for (int i = 0; i < width; ++i) out[i * stride + b] = row[i];
+  }
+}
+
+// dst [inner, outer, block] = src [outer, inner, block] with its first two axes swapped: moves
+// encodings between the perception stack's [P, scans, B] and the feature rows' [scans, P, B].
+void SwapBlockAxes(const float* src, int outer, int inner, int block, float* dst) {
+  for (int o = 0; o < outer; ++o) {
+    for (int i = 0; i < inner; ++i) {
+      const float* from = src + (static_cast<std::ptrdiff_t>(o) * inner + i) * block;
+      std::copy(from, from + block, dst + (static_cast<std::ptrdiff_t>(i) * outer + o) * block);
+    }
   }
 }
 
@@ -103,6 +116,8 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
     : model_(std::move(model)),
       max_batch_(max_batch),
       features_dim_(static_cast<int>(model_->features_extractor()->features_dim())),
+      scans_(static_cast<int>(model_->features_extractor()->options().scans)),
+      observation_size_(static_cast<int>(model_->features_extractor()->observation_size())),
       extractor_trainable_(model_->features_extractor()->trainable()),
       parameters_(model_->TrainableParameters()),
       gradients_(ZerosLike(parameters_)),
@@ -127,7 +142,7 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
           conv.out_size = conv.conv.out_channels * length;
           layers.push_back(conv);
         }
-        return FastLayerStack(std::move(layers), max_batch_);
+        return FastLayerStack(std::move(layers), scans_ * max_batch_);
       }()),
       actor_([this] {
         std::vector<FastLayer> layers;
@@ -154,12 +169,14 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
         return FastLayerStack(std::move(layers), max_batch_);
       }()),
       rows_(max_batch),
-      perception_input_(static_cast<std::size_t>(kNumRays) * max_batch),
+      perception_input_(static_cast<std::size_t>(kNumRays) * scans_ * max_batch),
       features_(static_cast<std::size_t>(features_dim_) * max_batch),
       d_features_actor_(features_.size()),
-      d_features_critic_(features_.size()) {
+      d_features_critic_(features_.size()),
+      d_perception_(
+          scans_ > 1 ? static_cast<std::size_t>(features_dim_ - kNavigationSize) * max_batch : 0) {
   TORCH_CHECK(perception_.in_size() == kNumRays, "the perception stack must read 180 values");
-  TORCH_CHECK(kNavigationSize + perception_.out_size() == features_dim_,
+  TORCH_CHECK(kNavigationSize + scans_ * perception_.out_size() == features_dim_,
               "perception output does not match features_dim");
 }
 
@@ -192,7 +209,7 @@ FastLayer FastActorCritic::Bind(FastLayer::Kind kind, const torch::Tensor& weigh
 void FastActorCritic::Predict(const float* observations, int B, float* mean, float* value) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
   for (int b = 0; b < B; ++b) {
-    rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * kObservationSize;
+    rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * observation_size_;
   }
   ForwardObservations(rows_.data(), B);
   for (int b = 0; b < B; ++b) {
@@ -205,32 +222,37 @@ void FastActorCritic::Features(const float* observations, int count, float* feat
   for (int start = 0; start < count; start += max_batch_) {
     const int B = std::min(max_batch_, count - start);
     for (int b = 0; b < B; ++b) {
-      rows_[b] = observations + static_cast<std::ptrdiff_t>(start + b) * kObservationSize;
+      rows_[b] = observations + static_cast<std::ptrdiff_t>(start + b) * observation_size_;
     }
-    GatherRows(rows_.data(), B, kNavigationSize, kNumRays, perception_input_.data());
-    const float* perception = perception_.Forward(perception_input_.data(), B);
-    for (int b = 0; b < B; ++b) {
-      float* out = features + static_cast<std::ptrdiff_t>(start + b) * features_dim_;
-      std::copy(rows_[b], rows_[b] + kNavigationSize, out);
-      for (int i = kNavigationSize; i < features_dim_; ++i) {
-        out[i] = perception[(i - kNavigationSize) * B + b];
-      }
-    }
+    ForwardExtractor(rows_.data(), B);
+    kernels::Transpose(features_.data(), features_dim_, B,
+                       features + static_cast<std::ptrdiff_t>(start) * features_dim_);
   }
 }
 
 void FastActorCritic::ForwardObservations(const float* const* rows, int B) {
-  GatherRows(rows, B, 0, kNavigationSize, features_.data());
-  GatherRows(rows, B, kNavigationSize, kNumRays, perception_input_.data());
-  const float* perception = perception_.Forward(perception_input_.data(), B);
-  std::copy(perception, perception + perception_.out_size() * B,
-            features_.data() + kNavigationSize * B);
+  ForwardExtractor(rows, B);
   ForwardFromFeatures(B);
 }
 
 void FastActorCritic::ForwardFeatures(const float* const* rows, int B) {
-  GatherRows(rows, B, 0, features_dim_, features_.data());
+  GatherRows(rows, B, 0, features_dim_, B, features_.data());
   ForwardFromFeatures(B);
+}
+
+// features_ [features_dim, B] of the observation rows: the navigation values, then the encodings
+// of scans 0, 1, ... from one perception pass over all scans * B scans.
+void FastActorCritic::ForwardExtractor(const float* const* rows, int B) {
+  TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
+  const int samples = scans_ * B;
+  GatherRows(rows, B, 0, kNavigationSize, B, features_.data());
+  for (int k = 0; k < scans_; ++k) {
+    GatherRows(rows, B, kNavigationSize + k * kNumRays, kNumRays, samples,
+               perception_input_.data() + k * B);
+  }
+  const float* perception = perception_.Forward(perception_input_.data(), samples);
+  SwapBlockAxes(perception, perception_.out_size(), scans_, B,
+                features_.data() + kNavigationSize * B);
 }
 
 void FastActorCritic::ForwardFromFeatures(int B) {
@@ -247,11 +269,18 @@ void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log
   std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
   if (!extractor_trainable_) return;
   // Both heads read the same features: their gradients add up (rows 6.. are the perception's).
-  float* d_perception = d_features_actor_.data() + kNavigationSize * B;
-  const float* d_critic_perception = d_features_critic_.data() + kNavigationSize * B;
-  const int n = perception_.out_size() * B;
-  for (int i = 0; i < n; ++i) d_perception[i] += d_critic_perception[i];
-  perception_.Backward(perception_input_.data(), d_perception, B, nullptr);
+  float* d_encodings = d_features_actor_.data() + kNavigationSize * B;
+  const float* d_critic_encodings = d_features_critic_.data() + kNavigationSize * B;
+  const int n = (features_dim_ - kNavigationSize) * B;
+  for (int i = 0; i < n; ++i) d_encodings[i] += d_critic_encodings[i];
+  // The scans share the stack's weights: one backward over all scans * B samples sums their
+  // gradients. A single scan's rows are already in the stack's layout.
+  float* d_perception = d_encodings;
+  if (scans_ > 1) {
+    d_perception = d_perception_.data();
+    SwapBlockAxes(d_encodings, scans_, perception_.out_size(), B, d_perception);
+  }
+  perception_.Backward(perception_input_.data(), d_perception, scans_ * B, nullptr);
 }
 
 }  // namespace colav

@@ -8,7 +8,9 @@
 // ActorCritic::TrainableParameters(). tests/models/actor_critic_fast_test.cpp checks both passes
 // against autograd.
 //
-// Activations are feature-major ([features, B], see actor_critic_kernels.h).
+// Activations are feature-major ([features, B], see actor_critic_kernels.h). An observation of S
+// range scans runs the perception stack on S * B samples (column k * B + b holds scan k of sample
+// b), whose encodings become feature rows 6 + k * P + p.
 #pragma once
 
 #include <torch/torch.h>
@@ -59,13 +61,15 @@ class FastActorCritic {
   /// to max_batch samples.
   FastActorCritic(ActorCritic model, int max_batch);
 
-  /// observations [B, 186] (row-major) -> action mean [B, 2] and value [B] (row-major).
+  /// observations [B, observation_size] (row-major) -> action mean [B, 2] and value [B]
+  /// (row-major).
   void Predict(const float* observations, int B, float* mean, float* value);
-  /// Extractor output of `count` observations [count, 186] -> features [count, features_dim]
-  /// (row-major); any count.
+  /// Extractor output of `count` observations [count, observation_size] -> features
+  /// [count, features_dim] (row-major); any count.
   void Features(const float* observations, int count, float* features);
 
-  /// Training forward of the B samples whose observation rows (length 186) are `rows`.
+  /// Training forward of the B samples whose observation rows (length observation_size) are
+  /// `rows`.
   void ForwardObservations(const float* const* rows, int B);
   /// Training forward from precomputed feature rows (length features_dim), for an extractor that
   /// does not train.
@@ -83,9 +87,12 @@ class FastActorCritic {
   const std::vector<torch::Tensor>& parameters() const { return parameters_; }
   bool extractor_trainable() const { return extractor_trainable_; }
   int features_dim() const { return features_dim_; }
+  /// Values per observation row: 6 navigation values, then scans x 180 closeness values.
+  int observation_size() const { return observation_size_; }
   const float* log_std() const { return log_std_.data_ptr<float>(); }
 
  private:
+  void ForwardExtractor(const float* const* rows, int B);
   void ForwardFromFeatures(int B);
   torch::Tensor GradientOf(const torch::Tensor& parameter) const;
   FastLayer Bind(FastLayer::Kind kind, const torch::Tensor& weight, const torch::Tensor& bias,
@@ -94,15 +101,18 @@ class FastActorCritic {
   ActorCritic model_;
   int max_batch_;
   int features_dim_;
+  int scans_;
+  int observation_size_;
   bool extractor_trainable_;
   std::vector<torch::Tensor> parameters_;
   std::vector<torch::Tensor> gradients_;
   torch::Tensor log_std_, log_std_grad_;
   FastLayerStack perception_, actor_, critic_;
   std::vector<const float*> rows_;       // observation rows of Predict and Features
-  std::vector<float> perception_input_;  // [180, B]
+  std::vector<float> perception_input_;  // [180, scans * B]
   std::vector<float> features_;          // [features_dim, B]
   std::vector<float> d_features_actor_, d_features_critic_;
+  std::vector<float> d_perception_;  // [P, scans * B], for scans > 1
   const float* mean_ = nullptr;
   const float* value_ = nullptr;
 };

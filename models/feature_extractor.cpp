@@ -106,6 +106,8 @@ std::string ConvStackText(const std::vector<ConvLayerSpec>& layers) {
 
 FeatureExtractorImpl::FeatureExtractorImpl(FeatureExtractorOptions options)
     : options_(std::move(options)) {
+  TORCH_CHECK(options_.scans >= 1, "a feature extractor needs at least one scan, got ",
+              options_.scans);
   perception_ = register_module("perception", torch::nn::ModuleList());
   if (options_.kind == ExtractorKind::kBaseline) {
     BuildConvs(options_.baseline_convs);
@@ -183,15 +185,25 @@ torch::Tensor FeatureExtractorImpl::Perception(const torch::Tensor& closeness) {
 }
 
 torch::Tensor FeatureExtractorImpl::forward(const torch::Tensor& observations) {
-  TORCH_CHECK(observations.dim() == 2 && observations.size(1) == kObservationSize,
-              "observations must be [B, ", kObservationSize, "], got ", observations.sizes());
+  TORCH_CHECK(observations.dim() == 2 && observations.size(1) == observation_size(),
+              "observations must be [B, ", observation_size(), "] (", kNavigationSize,
+              " navigation values, then ", options_.scans, " scans of ", kNumRays, "), got ",
+              observations.sizes());
+  // One batch of B * scans single scans through the shared stack (views for a single scan).
+  const std::int64_t batch = observations.size(0);
+  const torch::Tensor scans = observations.narrow(1, kNavigationSize, kNumRays * options_.scans)
+                                  .reshape({batch * options_.scans, kNumRays});
   return torch::cat({observations.narrow(1, 0, kNavigationSize),
-                     Perception(observations.narrow(1, kNavigationSize, kNumRays))},
+                     Perception(scans).reshape({batch, options_.scans * perception_dims_})},
                     1);
 }
 
 std::int64_t FeatureExtractorImpl::features_dim() const {
-  return kNavigationSize + perception_dims_;
+  return kNavigationSize + options_.scans * perception_dims_;
+}
+
+std::int64_t FeatureExtractorImpl::observation_size() const {
+  return kNavigationSize + options_.scans * kNumRays;
 }
 
 bool FeatureExtractorImpl::trainable() const {

@@ -1,6 +1,8 @@
 // The feature extractor shared by the actor and the critic (spec README, "PPO agent"):
-// observation [B, 186] -> features [B, 6 + P] = [navigation (6 values, passed through),
-// perception encoding of the 180 closeness values (P = 12 for the paper's extractors)].
+// observation [B, 6 + 180 S] -> features [B, 6 + S P] = [navigation (6 values, passed through),
+// perception encoding of each of the S range scans of 180 closeness values (P = 12 for the paper's
+// extractors)]. S = 1 is the paper's observation [B, 186]; S > 1 appends the environment's earlier
+// scans (frame stacking), each encoded by the same perception stack.
 //
 // The perception encoder is a stack of circular Conv1d layers (ReLU between consecutive ones),
 // optionally followed by a Linear head:
@@ -62,6 +64,9 @@ struct FeatureExtractorOptions {
   EncoderHead head = EncoderHead::kMu;
   /// baseline: its convolution stack (the paper's: one layer 1->1, k45, s15, p15).
   std::vector<ConvLayerSpec> baseline_convs = {{1, 1, 45, 15, 15}};
+  /// Range scans per observation (the environment's scan history + 1); each is encoded by the
+  /// same perception stack (shared weights) and the encodings are concatenated.
+  std::int64_t scans = 1;
 };
 
 /// One layer of the perception encoder: a circular Conv1d or (after flattening) a Linear.
@@ -75,13 +80,17 @@ class FeatureExtractorImpl : public torch::nn::Module {
  public:
   explicit FeatureExtractorImpl(FeatureExtractorOptions options);
 
-  /// observations [B, 186] -> features [B, features_dim()].
+  /// observations [B, observation_size()] -> features [B, features_dim()]: the navigation values,
+  /// then the perception encodings of scans 0, 1, ... in order.
   torch::Tensor forward(const torch::Tensor& observations);
   /// closeness [B, 180] -> perception encoding [B, perception_dims()].
   torch::Tensor Perception(const torch::Tensor& closeness);
 
   std::int64_t perception_dims() const { return perception_dims_; }
+  /// 6 + scans * perception_dims().
   std::int64_t features_dim() const;
+  /// Values per observation: 6 navigation values, then scans x 180 closeness values.
+  std::int64_t observation_size() const;
   /// False for a locked VAE encoder: its parameters get no gradient and no optimiser.
   bool trainable() const;
   const FeatureExtractorOptions& options() const { return options_; }

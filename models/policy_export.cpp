@@ -11,9 +11,21 @@ namespace colav {
 namespace {
 
 std::string FeaturesSource(FeatureExtractorImpl& extractor) {
+  const std::int64_t scans = extractor.options().scans;
+  std::string closeness = "obs[:, " + std::to_string(kNavigationSize) + ":" +
+                          std::to_string(extractor.observation_size()) + "]";
+  std::string encodings = "h.flatten(1)";
+  if (scans > 1) {
+    // The scans go through the perception stack as one batch of B * scans single scans (scan k of
+    // sample b at row b * scans + k), so their encodings are rows of [B, scans * P].
+    closeness +=
+        ".reshape(obs.size(0) * " + std::to_string(scans) + ", " + std::to_string(kNumRays) + ")";
+    encodings =
+        "h.reshape(obs.size(0), " + std::to_string(scans * extractor.perception_dims()) + ")";
+  }
   std::ostringstream source;
   source << "def features(self, obs: Tensor) -> Tensor:\n"
-         << "    h = obs[:, " << kNavigationSize << ":" << kObservationSize << "].unsqueeze(1)\n";
+         << "    h = " << closeness << ".unsqueeze(1)\n";
   for (std::size_t i = 0; i < extractor.layers().size(); ++i) {
     const PerceptionLayer& layer = extractor.layers()[i];
     const std::string prefix = "features_extractor.perception." + std::to_string(i);
@@ -27,7 +39,7 @@ std::string FeaturesSource(FeatureExtractorImpl& extractor) {
     }
     if (layer.relu) source << "    h = torch.relu(h)\n";
   }
-  source << "    return torch.cat([obs[:, 0:" << kNavigationSize << "], h.flatten(1)], 1)\n";
+  source << "    return torch.cat([obs[:, 0:" << kNavigationSize << "], " << encodings << "], 1)\n";
   return source.str();
 }
 
@@ -53,6 +65,7 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
   script.register_attribute("extractor", c10::StringType::get(), ExtractorKindName(extractor.kind));
   script.register_attribute("locked", c10::BoolType::get(),
                             !model.features_extractor()->trainable());
+  script.register_attribute("scans", c10::IntType::get(), extractor.scans);
   script.register_attribute("global_step", c10::IntType::get(), global_step);
   script.register_attribute("observation_layout", c10::StringType::get(),
                             ObservationLayoutText(settings));

@@ -3,14 +3,17 @@
 // TorchScript source generated here, so policy.pt loads with torch.jit.load in Python and
 // torch::jit::load in C++.
 //
-//   forward(obs: float32 [B, 186]) -> action [B, 2]: the Gaussian's mean clipped to [-1, 1]
-//                                     (the deterministic action);
-//   value(obs) -> [B, 1];  features(obs) -> [B, 18] (the extractor's output).
+//   forward(obs: float32 [B, 6 + 180 * scans]) -> action [B, 2]: the Gaussian's mean clipped to
+//                                     [-1, 1] (the deterministic action);
+//   value(obs) -> [B, 1];  features(obs) -> [B, 6 + scans * P] (the extractor's output, [B, 18]
+//   for one scan and the paper's extractors).
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead
-//   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees).
-//   Attributes: extractor (str), locked (bool), global_step (int), observation_layout (str, the
-//   line above for the closeness transform trained with), observation_settings (str, the settings
-//   trained with, models/observation_settings_record.h).
+//   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees), then the
+//   earlier scans' 180 values each, newest first, when scans > 1.
+//   Attributes: extractor (str), locked (bool), scans (int, range scans per observation),
+//   global_step (int), observation_layout (str, the line above for the closeness transform trained
+//   with), observation_settings (str, the settings trained with,
+//   models/observation_settings_record.h).
 // A parameter `a.b.c` of the ActorCritic is the attribute `a_b_c` of the scripted module.
 #pragma once
 

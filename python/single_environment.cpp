@@ -45,7 +45,7 @@ py::array_t<float> SingleEnvironment::Reset(std::optional<std::uint64_t> seed) {
     ++episode_;
   }
   started_ = episode_running_ = true;
-  py::array_t<float> observation(kObservationSize);
+  py::array_t<float> observation(observation_size());
   environment_.Reset(TrainingEpisodeSeed(seed_, 0, episode_), observation.mutable_data());
   if (render_) recorder_.emplace(environment_.world(), scene_name_, "agent");
   return observation;
@@ -60,7 +60,7 @@ py::tuple SingleEnvironment::Step(const py::object& action) {
   if (!values || values.size() != kActionSize) {
     throw py::value_error("action: expected 2 numbers (thrust, yaw moment)");
   }
-  py::array_t<float> observation(kObservationSize);
+  py::array_t<float> observation(observation_size());
   const StepResult result = environment_.Step(values.data(), observation.mutable_data());
   if (recorder_) recorder_->Record(environment_.world(), values.data(), result);
   episode_running_ = !(result.terminated || result.truncated);
@@ -100,6 +100,7 @@ void BindSingleEnvironment(py::module_& module) {
   py::class_<SingleEnvironment>(module, "SingleEnvironment")
       .def(py::init<const ResolvedSettings&, std::optional<Scenario>, std::uint64_t, bool>(),
            py::arg("settings"), py::arg("scenario"), py::arg("seed"), py::arg("render") = false)
+      .def_property_readonly("observation_size", &SingleEnvironment::observation_size)
       .def("reset", &SingleEnvironment::Reset, py::arg("seed"))
       .def("step", &SingleEnvironment::Step, py::arg("action"))
       .def("state", &SingleEnvironment::State)

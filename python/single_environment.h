@@ -28,6 +28,9 @@ class SingleEnvironment {
   /// Starts the next episode (with a seed: episode 0 of that seed); returns its observation.
   py::array_t<float> Reset(std::optional<std::uint64_t> seed);
 
+  /// Floats per observation: ObservationSize of the environment's settings.
+  int observation_size() const { return ObservationSize(environment_.config()); }
+
   /// Advances one second under `action` (2 numbers, clipped to [-1, 1]); returns (observation,
   /// reward, terminated, truncated, episode metrics or None). A step after the episode ended and
   /// before a reset is an error.

@@ -32,9 +32,9 @@ void RequireActionShape(const py::array& actions, int num_envs) {
 
 }  // namespace
 
-VectorEnvironment::OutputArrays::OutputArrays(int num_envs)
-    : observations({num_envs, kObservationSize}),
-      final_observations({num_envs, kObservationSize}),
+VectorEnvironment::OutputArrays::OutputArrays(int num_envs, int observation_size)
+    : observations({num_envs, observation_size}),
+      final_observations({num_envs, observation_size}),
       rewards(num_envs),
       terminated(num_envs),
       truncated(num_envs) {
@@ -48,12 +48,14 @@ VectorEnvironment::OutputArrays::OutputArrays(int num_envs)
 VectorEnvironment::VectorEnvironment(const ResolvedSettings& settings, int num_envs,
                                      std::uint64_t seed, int num_threads)
     : envs_(settings.config, num_envs, ThreadCountOrAllCores(num_threads), seed),
-      outputs_{OutputArrays(num_envs), OutputArrays(num_envs)} {}
+      outputs_{OutputArrays(num_envs, envs_.observation_size()),
+               OutputArrays(num_envs, envs_.observation_size())} {}
 
 VectorEnvironment::VectorEnvironment(const ResolvedSettings& settings,
                                      const std::vector<Scenario>& scenarios, int num_threads)
     : envs_(settings.config, scenarios, ThreadCountOrAllCores(num_threads)),
-      outputs_{OutputArrays(envs_.num_envs()), OutputArrays(envs_.num_envs())} {}
+      outputs_{OutputArrays(envs_.num_envs(), envs_.observation_size()),
+               OutputArrays(envs_.num_envs(), envs_.observation_size())} {}
 
 VectorEnvironment::OutputArrays& VectorEnvironment::NextOutputs() {
   current_ = 1 - current_;
@@ -116,6 +118,7 @@ void BindVectorEnvironment(py::module_& module) {
       .def(py::init<const ResolvedSettings&, const std::vector<Scenario>&, int>(),
            py::arg("settings"), py::arg("scenarios"), py::arg("num_threads"))
       .def_property_readonly("num_envs", &VectorEnvironment::num_envs)
+      .def_property_readonly("observation_size", &VectorEnvironment::observation_size)
       .def("reset", &VectorEnvironment::Reset, py::arg("seed"))
       .def("step", &VectorEnvironment::Step, py::arg("actions"))
       .def("finished_episodes", &VectorEnvironment::FinishedEpisodes);

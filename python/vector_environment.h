@@ -28,6 +28,8 @@ class VectorEnvironment {
                     int num_threads);
 
   int num_envs() const { return envs_.num_envs(); }
+  /// Floats per observation row: ObservationSize of the environment's settings.
+  int observation_size() const { return envs_.observation_size(); }
 
   /// New episodes in every world (see BatchedEnvironment::Reset); returns the observations.
   py::array_t<float> Reset(std::optional<std::uint64_t> seed);
@@ -38,15 +40,15 @@ class VectorEnvironment {
   /// the one after that overwrites these.
   py::tuple Step(const py::object& actions);
 
-  /// For the worlds whose episode ended on the last step: {"final_obs": [N, 186], "_final_obs":
-  /// mask [N], "episode_metrics": {metric: [N]}, "_episode_metrics": mask [N]} (Gymnasium's
-  /// vector info layout: values of other worlds are meaningless).
+  /// For the worlds whose episode ended on the last step: {"final_obs": [N, observation_size],
+  /// "_final_obs": mask [N], "episode_metrics": {metric: [N]}, "_episode_metrics": mask [N]}
+  /// (Gymnasium's vector info layout: values of other worlds are meaningless).
   py::dict FinishedEpisodes() const;
 
  private:
   // One set of result arrays and the pointers BatchedEnvironment writes through.
   struct OutputArrays {
-    explicit OutputArrays(int num_envs);
+    OutputArrays(int num_envs, int observation_size);
     py::array_t<float> observations;
     py::array_t<float> final_observations;
     py::array_t<float> rewards;

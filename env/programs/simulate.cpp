@@ -71,7 +71,7 @@ int Simulate(int argc, char** argv) {
   replay_flags.Check();
 
   Environment env(env_config, std::make_shared<FixedScenarioSource>(scenario));
-  std::vector<float> observation(kObservationSize);
+  std::vector<float> observation(ObservationSize(env_config));
   env.Reset(0, observation.data());
   std::string trace = TraceHeader() + "\n" + TraceRow(0, env.world(), StepResult{}) + "\n";
   SceneTrack track{"vessel", {env.world().vessel().head<2>()}, {}, false};

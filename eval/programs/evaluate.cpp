@@ -304,8 +304,8 @@ int Evaluate(int argc, char** argv) {
       "writes OUT/episodes.csv, OUT/summary.json, OUT/summary.md (mean and 95 % CIs per model,\n"
       "paired differences between models) and trajectory figures in OUT/figures/. Each policy "
       "runs\n"
-      "under the observation settings (env.closeness) recorded in its file, else in its sidecar\n"
-      "<policy>.yaml, else (with a warning) under this evaluation's."};
+      "under the observation settings (env.closeness, env.scan_history*) recorded in its file,\n"
+      "else in its sidecar <policy>.yaml, else (with a warning) under this evaluation's."};
   std::vector<std::string> policy_paths;
   std::vector<std::string> names;
   std::vector<std::string> scenario_files;

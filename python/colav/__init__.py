@@ -7,8 +7,11 @@
 
     env = colav.make(scenario="configs/scenarios/head-on.yaml")  # one world, Gymnasium Env
 
-Observations are float32 [186]: u, v, r, cte/100, heading error, look-ahead heading error, then
-the closeness of rays 0-179 (README, "Observation"). Actions are [thrust, yaw moment] in [-1, 1].
+Observations are float32 [6 + 180*(1+scan_history)], [186] by default (OBSERVATION_SIZE): u, v,
+r, cte/100, heading error, look-ahead heading error, then the closeness of rays 0-179 (README,
+"Observation"). With scan_history=H, the 180 closeness values of the scans k*scan_history_interval
+steps earlier follow for k = 1..H (the episode's first scan while there is none). Actions are
+[thrust, yaw moment] in [-1, 1].
 Bad settings, seeds or scenario files raise ValueError naming the key or file.
 """
 

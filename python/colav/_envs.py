@@ -73,9 +73,10 @@ class Env(_EnvBase):
     configuration (colav.env_settings()), e.g. closeness="log", test_mode=True, max_steps=500.
 
     Actions are used in double precision, as `simulate` uses them. step() returns
-    (obs float32 [186], reward float, terminated bool, truncated bool, info); info is {} except on
-    the last step of an episode: {"episode_metrics": {...}} (what evaluate records). state() gives
-    the world behind the observation (the columns of a `simulate` trace).
+    (obs float32 [6 + 180*(1+scan_history)] ([186] by default), reward float, terminated bool,
+    truncated bool, info); info is {} except on the last step of an episode: {"episode_metrics":
+    {...}} (what evaluate records). state() gives the world behind the observation (the columns of
+    a `simulate` trace).
 
     With render_mode="rgb_array", render() returns the scene now as a uint8 array
     [RENDER_SIZE, RENDER_SIZE, 3], drawn as `simulate --gif` draws its frames: the vessel (blue)
@@ -95,7 +96,7 @@ class Env(_EnvBase):
             resolved, None if scenario is None else _scenario(scenario),
             _whole_number("seed", seed, 0), render=render_mode is not None,
         )
-        self.observation_space = observation_space()
+        self.observation_space = observation_space(self._core.observation_size)
         self.action_space = action_space()
 
     def reset(self, *, seed=None, options=None):
@@ -135,14 +136,15 @@ class VectorEnv(_VectorEnvBase):
     colav.training_scenario(s)) replaying it in every episode. num_threads 0 uses every core.
     `settings` as for colav.Env.
 
-    step(actions [N, 2]) returns (obs float32 [N, 186], reward float32 [N], terminated bool [N],
-    truncated bool [N], info). float32 actions are read in place, other dtypes are converted.
+    step(actions [N, 2]) returns (obs float32 [N, 6 + 180*(1+scan_history)] ([N, 186] by
+    default), reward float32 [N], terminated bool [N], truncated bool [N], info). float32 actions
+    are read in place, other dtypes are converted.
 
     Autoreset (same step, as EnvPool): a world whose episode ends on a step is reset within that
     step. The returned obs row is already the first observation of its next episode, and
-    terminated/truncated say the previous one ended; info then holds "final_obs" [N, 186] (the
-    last observation of the finished episode) and "episode_metrics" ({metric: [N]}), with the masks
-    "_final_obs" and "_episode_metrics" marking the worlds concerned. Otherwise info is {}.
+    terminated/truncated say the previous one ended; info then holds "final_obs" (shaped as obs:
+    the last observation of the finished episode) and "episode_metrics" ({metric: [N]}), with the
+    masks "_final_obs" and "_episode_metrics" marking the worlds concerned. Otherwise info is {}.
 
     The returned arrays belong to the environment and are not allocated per step: the next step
     writes to a second set, and the step after that overwrites them. Copy what you keep longer.
@@ -169,9 +171,9 @@ class VectorEnv(_VectorEnvBase):
                 )
             self._core = _colav.VectorEnvironment(resolved, loaded, threads)
         self.num_envs = self._core.num_envs
-        self.single_observation_space = observation_space()
+        self.single_observation_space = observation_space(self._core.observation_size)
         self.single_action_space = action_space()
-        self.observation_space = observation_space(self.num_envs)
+        self.observation_space = observation_space(self._core.observation_size, self.num_envs)
         self.action_space = action_space(self.num_envs)
         self.closed = False
 

@@ -9,8 +9,10 @@ try:
 except ImportError:
     gymnasium = None
 
-OBSERVATION_SIZE = 186
 NAVIGATION_SIZE = 6
+NUM_RAYS = 180
+# The paper's observation (scan_history=0); with a scan history each earlier scan adds NUM_RAYS.
+OBSERVATION_SIZE = NAVIGATION_SIZE + NUM_RAYS
 ACTION_SIZE = 2
 
 
@@ -60,19 +62,20 @@ class _FallbackBox:
 Box = gymnasium.spaces.Box if gymnasium is not None else _FallbackBox
 
 
-def _observation_bounds():
-    """u, v, r and cte/100 are unbounded; the two heading errors are angles in [-pi, pi]; the 180
-    closeness values lie in [0, 1] (README, "Observation")."""
-    low = np.full(OBSERVATION_SIZE, -np.inf, dtype=np.float32)
-    high = np.full(OBSERVATION_SIZE, np.inf, dtype=np.float32)
+def _observation_bounds(observation_size):
+    """u, v, r and cte/100 are unbounded; the two heading errors are angles in [-pi, pi]; the
+    closeness values of every scan lie in [0, 1] (README, "Observation")."""
+    low = np.full(observation_size, -np.inf, dtype=np.float32)
+    high = np.full(observation_size, np.inf, dtype=np.float32)
     low[4:NAVIGATION_SIZE], high[4:NAVIGATION_SIZE] = -np.float32(np.pi), np.float32(np.pi)
     low[NAVIGATION_SIZE:], high[NAVIGATION_SIZE:] = 0.0, 1.0
     return low, high
 
 
-def observation_space(num_envs=None):
-    """Box of one observation [186], or of a batch [num_envs, 186]."""
-    low, high = _observation_bounds()
+def observation_space(observation_size, num_envs=None):
+    """Box of one observation [observation_size] (6 + 180*(1+scan_history), the environment's
+    observation_size), or of a batch [num_envs, observation_size]."""
+    low, high = _observation_bounds(observation_size)
     if num_envs is not None:
         low, high = np.tile(low, (num_envs, 1)), np.tile(high, (num_envs, 1))
     return Box(low=low, high=high, dtype=np.float32)

@@ -16,16 +16,26 @@ import torch
 import colav
 
 
+# The env keys that decide what an observation means (env/observation_settings.h).
+OBSERVATION_KEYS = ("closeness", "scan_history", "scan_history_interval")
+
+
 def observation_settings(path, policy):
     """The env settings the policy was trained with, found where evaluate looks: the file's
     `observation_settings` record, else the sidecar file "<policy>.yaml"; both hold
-    "env:\\n  closeness: linear|log" (env/observation_settings.h). {} when neither exists."""
+    "env:\\n  closeness: linear|log" and, with a scan history, "scan_history: H" and
+    "scan_history_interval: S" (env/observation_settings.h). {key: value text} of the keys found;
+    {} when neither exists."""
     text = getattr(policy, "observation_settings", None)
     if text is None and os.path.exists(path + ".yaml"):
         with open(path + ".yaml", encoding="utf-8") as sidecar:
             text = sidecar.read()
-    match = re.search(r"^\s*closeness:\s*(\S+)", text or "", re.MULTILINE)
-    return {"closeness": match.group(1)} if match else {}
+    settings = {}
+    for key in OBSERVATION_KEYS:
+        match = re.search(rf"^\s*{key}:\s*(\S+)", text or "", re.MULTILINE)
+        if match:
+            settings[key] = match.group(1)
+    return settings
 
 
 def run_episodes(policy, envs):
@@ -67,7 +77,8 @@ def summary_lines(results):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("policy", help="policy.pt (forward: obs [B, 186] -> action [B, 2])")
+    parser.add_argument(
+        "policy", help="policy.pt (forward: obs [B, 6 + 180*(1+scan_history)] -> action [B, 2])")
     parser.add_argument("--episodes", type=int, default=100, help="test scenarios")
     parser.add_argument("--seed", type=int, default=0, help="master seed of the test scenarios")
     parser.add_argument("--scenario", action="append", help="scenario file, repeatable")

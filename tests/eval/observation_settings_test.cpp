@@ -101,7 +101,7 @@ TEST_F(PolicySettingsTest, ABadSidecarIsAOneLineErrorNamingIt) {
   const std::filesystem::path sidecar = SidecarPath(folder_ / "agent.pt");
   testing_util::WriteFile(sidecar, "env:\n  closeness: square\n");
   EXPECT_THAT(UserErrorMessage([&] { Policy(folder_ / "agent.pt", "agent"); }),
-              HasSubstr(sidecar.string() + ": env.closeness"));
+              HasSubstr(sidecar.string() + ": key 'env.closeness' = 'square'"));
 }
 
 }  // namespace

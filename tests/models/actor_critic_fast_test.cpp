@@ -14,11 +14,12 @@ namespace {
 constexpr int kBatch = 13;  // not a multiple of the vector width: exercises the tails
 
 ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& folder, bool locked,
-                           EncoderHead head = EncoderHead::kMu) {
+                           EncoderHead head = EncoderHead::kMu, std::int64_t scans = 1) {
   ActorCriticOptions options;
   options.extractor.kind = kind;
   options.extractor.locked = locked;
   options.extractor.head = head;
+  options.extractor.scans = scans;
   options.seed = 11;
   if (kind != ExtractorKind::kBaseline) {
     const auto architecture =
@@ -31,8 +32,8 @@ ActorCriticOptions Options(ExtractorKind kind, const std::filesystem::path& fold
   return options;
 }
 
-torch::Tensor Observations(int B) {
-  torch::Tensor obs = torch::rand({B, kObservationSize});
+torch::Tensor Observations(int B, ActorCritic& model) {
+  torch::Tensor obs = torch::rand({B, model->features_extractor()->observation_size()});
   obs.narrow(1, 0, kNavigationSize).mul_(4.0).sub_(2.0);
   return obs;
 }
@@ -47,16 +48,17 @@ void ExpectClose(const float* fast, const torch::Tensor& reference, double toler
 }
 
 class FastActorCriticTest
-    : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, EncoderHead>> {};
+    : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, EncoderHead, int>> {};
 
 TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
-  const auto [kind, locked, head] = GetParam();
+  const auto [kind, locked, head, scans] = GetParam();
   testing_util::TemporaryFolder directory;
-  ActorCritic model(Options(kind, directory.path(), locked, head));
+  ActorCritic model(Options(kind, directory.path(), locked, head, scans));
   FastActorCritic fast(model, kBatch);
   EXPECT_EQ(fast.extractor_trainable(), kind == ExtractorKind::kBaseline || !locked);
+  EXPECT_EQ(fast.observation_size(), kNavigationSize + scans * kNumRays);
 
-  const torch::Tensor obs = Observations(kBatch);
+  const torch::Tensor obs = Observations(kBatch, model);
   const torch::Tensor grad_mean = torch::randn({kBatch, kActionSize});
   const torch::Tensor grad_value = torch::randn({kBatch});
   const torch::Tensor grad_log_std = torch::randn({kActionSize});
@@ -68,11 +70,11 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   std::vector<const float*> rows(kBatch);
   for (int b = 0; b < kBatch; ++b) rows[b] = obs[b].data_ptr<float>();
   std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
+  fast.Features(obs.data_ptr<float>(), kBatch, features.data());
+  ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
   if (fast.extractor_trainable()) {
     fast.ForwardObservations(rows.data(), kBatch);
   } else {
-    fast.Features(obs.data_ptr<float>(), kBatch, features.data());
-    ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
     for (int b = 0; b < kBatch; ++b) rows[b] = &features[b * fast.features_dim()];
     fast.ForwardFeatures(rows.data(), kBatch);
   }
@@ -93,25 +95,46 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
 
 INSTANTIATE_TEST_SUITE_P(
     Extractors, FastActorCriticTest,
-    ::testing::Values(std::tuple{ExtractorKind::kBaseline, false, EncoderHead::kMu},
-                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kMu},
-                      std::tuple{ExtractorKind::kVaeShallow, false, EncoderHead::kMu},
-                      std::tuple{ExtractorKind::kVaeDeep, true, EncoderHead::kMu},
-                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kMu},
-                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kReference},
-                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kReference}));
+    ::testing::Values(std::tuple{ExtractorKind::kBaseline, false, EncoderHead::kMu, 1},
+                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kMu, 1},
+                      std::tuple{ExtractorKind::kVaeShallow, false, EncoderHead::kMu, 1},
+                      std::tuple{ExtractorKind::kVaeDeep, true, EncoderHead::kMu, 1},
+                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kMu, 1},
+                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kReference, 1},
+                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kReference, 1},
+                      // Scan history: three scans through one shared perception stack.
+                      std::tuple{ExtractorKind::kBaseline, false, EncoderHead::kMu, 3},
+                      std::tuple{ExtractorKind::kVaeShallow, true, EncoderHead::kMu, 3},
+                      std::tuple{ExtractorKind::kVaeDeep, false, EncoderHead::kReference, 3}));
 
-TEST(FastActorCriticPredictTest, PredictMatchesTheModel) {
-  ActorCritic model(ActorCriticOptions{});
-  FastActorCritic fast(model, 8);
-  const torch::Tensor obs = Observations(8);
-  std::vector<float> mean(8 * kActionSize), value(8);
-  fast.Predict(obs.data_ptr<float>(), 8, mean.data(), value.data());
+class FastActorCriticPredictTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, int>> {
+};
+
+TEST_P(FastActorCriticPredictTest, PredictAndFeaturesMatchTheModel) {
+  const auto [kind, scans] = GetParam();
+  testing_util::TemporaryFolder directory;
+  ActorCritic model(Options(kind, directory.path(), /*locked=*/true, EncoderHead::kMu, scans));
+  constexpr int kMaxBatch = 5;
+  FastActorCritic fast(model, kMaxBatch);
+  const torch::Tensor obs = Observations(kBatch, model);
   torch::NoGradGuard no_grad;
-  const auto [expected_mean, expected_value] = model->forward(obs);
+  // Features of more observations than max_batch: in chunks.
+  std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
+  fast.Features(obs.data_ptr<float>(), kBatch, features.data());
+  ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
+
+  const torch::Tensor batch = obs.narrow(0, 0, kMaxBatch);
+  std::vector<float> mean(kMaxBatch * kActionSize), value(kMaxBatch);
+  fast.Predict(batch.data_ptr<float>(), kMaxBatch, mean.data(), value.data());
+  const auto [expected_mean, expected_value] = model->forward(batch);
   ExpectClose(mean.data(), expected_mean, 1e-5, "mean");
   ExpectClose(value.data(), expected_value, 1e-5, "value");
 }
+
+INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticPredictTest,
+                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, 1},
+                                           std::tuple{ExtractorKind::kBaseline, 3},
+                                           std::tuple{ExtractorKind::kVaeDeep, 3}));
 
 TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   std::vector<float> x;

@@ -42,6 +42,59 @@ TEST(FeatureExtractorTest, BaselineIsOneCircularConvAfterTheNavigationValues) {
   EXPECT_TRUE(extractor->trainable());
 }
 
+// Observations [B, 6 + 180 * scans.size()]: random navigation values, then the scans [B, 180].
+torch::Tensor ObservationOf(const std::vector<torch::Tensor>& scans) {
+  std::vector<torch::Tensor> parts = {torch::rand({scans.front().size(0), kNavigationSize})};
+  parts.insert(parts.end(), scans.begin(), scans.end());
+  return torch::cat(parts, 1);
+}
+
+TEST(FeatureExtractorTest, EachScanIsEncodedByTheSameStackInOrder) {
+  FeatureExtractorOptions options;
+  options.scans = 3;
+  options.baseline_convs = ParseConvStack("3:45:15:15,1:3:1:1");  // two layers, a ReLU between
+  FeatureExtractor extractor(options);
+  ASSERT_EQ(extractor->observation_size(), kNavigationSize + 3 * kNumRays);
+  ASSERT_EQ(extractor->features_dim(), kNavigationSize + 3 * 12);
+  torch::NoGradGuard no_grad;
+  const torch::Tensor a = torch::rand({2, kNumRays});
+  const torch::Tensor b = torch::rand({2, kNumRays});
+  const torch::Tensor c = torch::rand({2, kNumRays});
+  const auto block = [](const torch::Tensor& features, int k) {
+    return features.narrow(1, kNavigationSize + 12 * k, 12);
+  };
+
+  const torch::Tensor copies = ObservationOf({a, a, a});
+  const torch::Tensor features = extractor->forward(copies);
+  EXPECT_TRUE(
+      torch::equal(features.narrow(1, 0, kNavigationSize), copies.narrow(1, 0, kNavigationSize)));
+  const torch::Tensor encoding = extractor->Perception(a);
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(torch::allclose(block(features, k), encoding)) << k;
+
+  const torch::Tensor abc = extractor->forward(ObservationOf({a, b, c}));
+  const torch::Tensor cab = extractor->forward(ObservationOf({c, a, b}));
+  EXPECT_FALSE(torch::allclose(block(abc, 0), block(abc, 1)));  // distinct scans, distinct codes
+  for (int k = 0; k < 3; ++k) EXPECT_TRUE(torch::allclose(block(cab, (k + 1) % 3), block(abc, k)));
+}
+
+TEST(FeatureExtractorTest, ObservationsOfAnotherWidthAreRejected) {
+  FeatureExtractorOptions options;
+  options.scans = 3;
+  FeatureExtractor extractor(options);
+  try {
+    extractor->forward(torch::rand({2, kObservationSize}));
+    ADD_FAILURE() << "a single-scan observation was accepted";
+  } catch (const c10::Error& error) {
+    EXPECT_NE(std::string(error.what_without_backtrace()).find("[B, 546]"), std::string::npos)
+        << error.what_without_backtrace();
+  }
+  EXPECT_THROW(extractor->forward(torch::rand({2, kNavigationSize + 4 * kNumRays})), c10::Error);
+  EXPECT_THROW(FeatureExtractor(FeatureExtractorOptions{})->forward(torch::rand({2, 546})),
+               c10::Error);
+  options.scans = 0;
+  EXPECT_THROW(FeatureExtractor{options}, c10::Error);
+}
+
 TEST(FeatureExtractorTest, UnknownExtractorNameIsAOneLineUserError) {
   const std::string message = UserErrorMessage([] { ParseExtractorKind("vae-huge"); });
   EXPECT_NE(message.find("vae-huge"), std::string::npos);

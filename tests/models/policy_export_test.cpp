@@ -15,7 +15,7 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
   ExportPolicy(*model, 1234, ObservationSettings{}, path);
   torch::jit::Module loaded = torch::jit::load(path.string());
   torch::NoGradGuard no_grad;
-  torch::Tensor obs = torch::rand({6, kObservationSize});
+  torch::Tensor obs = torch::rand({6, model->features_extractor()->observation_size()});
   obs.narrow(1, 0, kNavigationSize).mul_(200.0).sub_(100.0);  // big means: clipping matters
   const auto [mean, value] = model->forward(obs);
   const torch::Tensor action = loaded.forward({obs}).toTensor();
@@ -27,6 +27,7 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
   EXPECT_EQ(loaded.attr("global_step").toInt(), 1234);
   EXPECT_EQ(loaded.attr("extractor").toStringRef(),
             ExtractorKindName(model->options().extractor.kind));
+  EXPECT_EQ(loaded.attr("scans").toInt(), model->options().extractor.scans);
 }
 
 TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
@@ -40,13 +41,20 @@ TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
   ExpectExportMatches(model, directory.path() / "policy.pt");
 }
 
+// Makes `options` a VAE extractor of `architecture` with an untrained encoder saved in `folder`.
+void UseSavedEncoder(ActorCriticOptions& options, VaeArchitecture architecture,
+                     const std::filesystem::path& folder) {
+  options.extractor.kind = architecture == VaeArchitecture::kDeep ? ExtractorKind::kVaeDeep
+                                                                  : ExtractorKind::kVaeShallow;
+  options.extractor.encoder = folder / "encoder.pt";
+  ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, 12}), ObservationSettings{},
+                options.extractor.encoder);
+}
+
 TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
   testing_util::TemporaryFolder directory;
   ActorCriticOptions options;
-  options.extractor.kind = ExtractorKind::kVaeDeep;
-  options.extractor.encoder = directory.path() / "encoder.pt";
-  ExportEncoder(VaeEncoder(VaeEncoderOptions{VaeArchitecture::kDeep, 12}), ObservationSettings{},
-                options.extractor.encoder);
+  UseSavedEncoder(options, VaeArchitecture::kDeep, directory.path());
   ActorCritic model(options);
   ExpectExportMatches(model, directory.path() / "policy.pt");
   torch::jit::Module loaded = torch::jit::load((directory.path() / "policy.pt").string());
@@ -54,6 +62,31 @@ TEST(PolicyExportTest, DeepVaePolicyEqualsTheInProcessPolicy) {
   options.extractor.head = EncoderHead::kReference;  // the ReLU after the head is exported too
   ActorCritic reference(options);
   ExpectExportMatches(reference, directory.path() / "reference.pt");
+}
+
+TEST(PolicyExportTest, PoliciesOfThreeScansEqualTheInProcessPolicy) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.extractor.scans = 3;
+  ActorCritic baseline(options);
+  ExpectExportMatches(baseline, directory.path() / "baseline.pt");
+  UseSavedEncoder(options, VaeArchitecture::kShallow, directory.path());
+  options.extractor.head = EncoderHead::kReference;
+  ActorCritic vae(options);
+  ExpectExportMatches(vae, directory.path() / "vae.pt");
+}
+
+TEST(PolicyExportTest, APolicyOfThreeScansRejectsASingleScanObservation) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.extractor.scans = 3;
+  ActorCritic model(options);
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 1, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  const torch::Tensor obs = torch::rand({2, kObservationSize});
+  EXPECT_THROW(loaded.forward({obs}), std::exception);  // the interpreter's runtime_error
+  EXPECT_THROW(loaded.get_method("value")({obs}), std::exception);
 }
 
 TEST(PolicyExportTest, RecordsTheObservationSettingsAndTheirLayout) {
@@ -79,7 +112,7 @@ TEST(PolicyExportTest, AFileWithoutRecordedSettingsHasNone) {
   bare.register_attribute(kObservationSettingsAttribute, c10::StringType::get(),
                           std::string("env:\n  closeness: cubic\n"));
   EXPECT_THAT(testing_util::UserErrorMessage([&] { RecordedObservationSettings(bare, "bare.pt"); }),
-              ::testing::HasSubstr("bare.pt: env.closeness"));
+              ::testing::HasSubstr("bare.pt: key 'env.closeness' = 'cubic'"));
 }
 
 }  // namespace

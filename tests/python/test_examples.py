@@ -42,5 +42,27 @@ def test_run_policy(tmp_path):
     assert "over 1 episodes (scenario files" in output
 
 
+class HistoryPolicy(torch.nn.Module):
+    """A policy.pt trained with a scan history: it records its observation settings, as
+    train_ppo's files do, and only takes observations of their size."""
+
+    observation_settings: str
+
+    def __init__(self):
+        super().__init__()
+        self.observation_settings = (
+            "env:\n  closeness: log\n  scan_history: 3\n  scan_history_interval: 5\n")
+        self.linear = torch.nn.Linear(6 + 180 * 4, 2)
+
+    def forward(self, obs):
+        return torch.tanh(self.linear(obs))
+
+
+def test_run_policy_builds_the_env_of_the_recorded_observation_settings(tmp_path):
+    torch.jit.script(HistoryPolicy()).save(str(tmp_path / "policy.pt"))
+    output = run_example("run_policy.py", tmp_path / "policy.pt", "--episodes", 2)
+    assert "'closeness': 'log', 'scan_history': '3', 'scan_history_interval': '5'" in output
+
+
 def test_bench_python():
     assert "steps/s" in run_example("bench_python.py", "--seconds", 0.2, "--envs", 2)

@@ -16,6 +16,8 @@ OTHER_VALUES = {
     "goal_radius": 2.5,
     "goal_progress": 0.9,
     "min_cumulative_reward": -500.0,
+    "scan_history": 2,
+    "scan_history_interval": 3,
 }
 
 
@@ -61,6 +63,9 @@ def test_max_steps_truncates():
     ({"min_cumulative_reward": float("inf")}, "env.min_cumulative_reward"),
     ({"closeness": "cubic"}, "env.closeness"),
     ({"test_mode": "yes"}, "env.test_mode"),
+    ({"scan_history": 16}, "'env.scan_history'"),
+    ({"scan_history": -1}, "'env.scan_history'"),
+    ({"scan_history_interval": 0}, "env.scan_history_interval"),
     ({"max_step": 10}, "env.max_step' (did you mean 'env.max_steps'?)"),
 ])
 @pytest.mark.parametrize("make", [colav.make, colav.make_vec])

@@ -112,8 +112,11 @@ void RequireRolloutSizes(PpoRunOptions& options) {
   }
 }
 
-void DeriveModelSeed(PpoRunOptions& options) {
+// What the model takes from the rest of the configuration: its seed, and as many scans per
+// observation as the environment gives.
+void DeriveModelSettings(PpoRunOptions& options) {
   options.model.seed = DeriveSeed(options.ppo.seed, "policy-init");
+  options.model.extractor.scans = ScansPerObservation(options.env);
 }
 
 }  // namespace
@@ -232,7 +235,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Include(EnvironmentBinding(), &Run::env)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
-      .Then(DeriveModelSeed);
+      .Then(DeriveModelSettings);
   return binding;
 }
 

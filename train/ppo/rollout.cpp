@@ -40,7 +40,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   const float* epsilon = noise.data_ptr<float>();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
-    std::copy_n(env_.observations(), N * kObservationSize, observations);
+    std::copy_n(env_.observations(), N * env_.observation_size(), observations);
     policy.Predict(observations, N, mean_.data(), buffer.values(t));
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
@@ -86,7 +86,7 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
     buffer.final_values(t)[e] = 0.0f;
     if (buffer.bootstrapped(t)[e] == 0) continue;
     // Rare (one step in 2000 per world): value the one row on its own.
-    policy.Predict(env_.final_observations() + static_cast<std::ptrdiff_t>(e) * kObservationSize, 1,
+    policy.Predict(env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(), 1,
                    scratch_means_.data(), scratch_values_.data());
     buffer.final_values(t)[e] = scratch_values_[0];
   }

@@ -6,10 +6,11 @@
 
 namespace colav {
 
-RolloutBuffer::RolloutBuffer(int num_steps, int num_envs)
+RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size)
     : num_steps_(num_steps),
       num_envs_(num_envs),
-      observations_(static_cast<std::size_t>(size()) * kObservationSize),
+      observation_size_(observation_size),
+      observations_(static_cast<std::size_t>(size()) * observation_size),
       actions_(static_cast<std::size_t>(size()) * kActionSize),
       log_probs_(size()),
       values_(size()),

@@ -13,14 +13,16 @@ namespace colav {
 
 class RolloutBuffer {
  public:
-  RolloutBuffer(int num_steps, int num_envs);
+  /// observation_size: floats per observation row (ObservationSize of the environment).
+  RolloutBuffer(int num_steps, int num_envs, int observation_size);
 
   int num_steps() const { return num_steps_; }
   int num_envs() const { return num_envs_; }
   int size() const { return num_steps_ * num_envs_; }
+  int observation_size() const { return observation_size_; }
 
   // Rows of step t, one per world.
-  float* observations(int t) { return &observations_[Offset(t, kObservationSize)]; }
+  float* observations(int t) { return &observations_[Offset(t, observation_size_)]; }
   float* actions(int t) { return &actions_[Offset(t, kActionSize)]; }
   float* log_probs(int t) { return &log_probs_[Offset(t, 1)]; }
   float* values(int t) { return &values_[Offset(t, 1)]; }
@@ -52,6 +54,7 @@ class RolloutBuffer {
 
   int num_steps_;
   int num_envs_;
+  int observation_size_;
   std::vector<float> observations_, actions_, log_probs_, values_, rewards_, final_values_;
   std::vector<std::uint8_t> dones_, bootstrapped_;
   std::vector<float> last_values_, advantages_, returns_;

@@ -71,7 +71,7 @@ class PpoTrainer {
                    DeriveSeed(options_.seed, "worlds", 0), options_.timeouts_terminal),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
-        buffer_(options_.n_steps, options_.n_envs) {
+        buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env)) {
     updater_.set_n_updates(counters_.n_updates);
     if (resume) ContinueFromRolloutStart();
   }

@@ -21,7 +21,7 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
 
 PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
   const bool frozen_features = !policy_.extractor_trainable();
-  const int width = frozen_features ? policy_.features_dim() : kObservationSize;
+  const int width = frozen_features ? policy_.features_dim() : buffer.observation_size();
   const float* source = frozen_features ? features_.data() : buffer.observations().data();
   for (int b = 0; b < B; ++b) {
     const std::int64_t i = indices[b];

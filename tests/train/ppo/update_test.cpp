@@ -23,7 +23,7 @@ PpoOptions SmallOptions() {
 
 // A rollout of random observations, actions and rewards.
 RolloutBuffer SyntheticRollout(const PpoOptions& options) {
-  RolloutBuffer buffer(options.n_steps, options.n_envs);
+  RolloutBuffer buffer(options.n_steps, options.n_envs, kObservationSize);
   const int N = options.n_envs;
   for (int t = 0; t < options.n_steps; ++t) {
     const torch::Tensor obs = torch::rand({N, kObservationSize});

@@ -34,7 +34,7 @@ struct Configuration {
 };
 
 colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options) {
-  colav::RolloutBuffer buffer(options.n_steps, options.n_envs);
+  colav::RolloutBuffer buffer(options.n_steps, options.n_envs, colav::kObservationSize);
   const int N = options.n_envs;
   torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(1);
   for (int t = 0; t < options.n_steps; ++t) {
