@@ -74,13 +74,13 @@ def test_scenario_file_from_python_is_the_simulate_trace(scenario_file, tmp_path
 
 
 class TinyPolicy(torch.nn.Module):
-    """A policy.pt as train_ppo writes one (forward: obs [B, 186] -> action [B, 2] in [-1, 1]),
-    with fixed random weights and a bias towards full thrust."""
+    """A policy.pt as train_ppo writes one (forward: obs [B, observation_size] -> action [B, 2] in
+    [-1, 1]), with fixed random weights and a bias towards full thrust."""
 
-    def __init__(self):
+    def __init__(self, observation_size):
         super().__init__()
         torch.manual_seed(0)
-        self.hidden = torch.nn.Linear(186, 16)
+        self.hidden = torch.nn.Linear(observation_size, 16)
         self.out = torch.nn.Linear(16, 2)
         with torch.no_grad():
             self.out.bias[0] = 2.0
@@ -89,11 +89,21 @@ class TinyPolicy(torch.nn.Module):
         return torch.tanh(self.out(torch.tanh(self.hidden(obs))))
 
 
-@pytest.fixture(scope="module")
-def policy_file(tmp_path_factory):
+# evaluate's sidecar of each policy, and the observation size it implies: the paper's observation,
+# and one with two earlier scans 5 steps apart (env.scan_history).
+POLICY_SETTINGS = {
+    "current_scan": ("env:\n  closeness: log\n", 186),
+    "scan_history": ("env:\n  closeness: log\n  scan_history: 2\n  scan_history_interval: 5\n",
+                     546),
+}
+
+
+@pytest.fixture(scope="module", params=sorted(POLICY_SETTINGS))
+def policy_file(request, tmp_path_factory):
+    sidecar, observation_size = POLICY_SETTINGS[request.param]
     path = tmp_path_factory.mktemp("policy") / "policy.pt"
-    torch.jit.script(TinyPolicy()).save(str(path))
-    (path.parent / "policy.pt.yaml").write_text("env:\n  closeness: log\n")  # evaluate's sidecar
+    torch.jit.script(TinyPolicy(observation_size)).save(str(path))
+    (path.parent / "policy.pt.yaml").write_text(sidecar)
     return path
 
 
@@ -116,8 +126,9 @@ def python_episodes(policy_file, scenarios):
     example = run_policy_example()
     policy = torch.jit.load(str(policy_file))
     settings = example.observation_settings(str(policy_file), policy)
-    assert settings == {"closeness": "log"}
+    assert settings["closeness"] == "log"
     envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
+    assert envs.single_observation_space.shape == (policy.hidden.weight.shape[1],)
     return example.run_episodes(policy, envs)
 
 
