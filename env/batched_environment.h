@@ -122,6 +122,10 @@ class BatchedEnvironment {
   template <typename Action>
   void StepWorld(int world, const Action* action, const BatchedOutputs& outputs);
   void ReplayWorld(int world, const WorldHistory& history);
+  /// Orders each thread's share of the worlds by the cost of their last step, dearest first, so
+  /// the world a thread may still be stepping when the other has nothing left is its cheapest
+  /// (the wait at the end of a step was about 8 % of the threads' time).
+  void OrderSharesByCost();
 
   int num_envs_;
   int observation_size_;
@@ -137,6 +141,9 @@ class BatchedEnvironment {
   std::vector<std::uint8_t> terminated_;
   std::vector<std::uint8_t> truncated_;
   std::vector<std::optional<EpisodeMetrics>> finished_episodes_;
+  /// The world stepped as loop index i; each thread's share as the pool splits the indices.
+  std::vector<int> step_order_;
+  std::vector<std::uint64_t> step_cost_;  ///< of each world's last step, in clock ticks
 };
 
 }  // namespace colav

@@ -16,11 +16,10 @@ constexpr double kCteObservationScale = 100.0;
 Environment::Environment(EnvironmentConfig config, std::shared_ptr<const ScenarioSource> source)
     : config_(config),
       source_(std::move(source)),
-      scan_ring_(config_.scan_history == 0
-                     ? 0
-                     : static_cast<std::size_t>(config_.scan_history) *
-                               config_.scan_history_interval * kNumRays +
-                           kNumRays) {}
+      scan_ring_(config_.scan_history == 0 ? 0
+                                           : static_cast<std::size_t>(config_.scan_history) *
+                                                     config_.scan_history_interval * kNumRays +
+                                                 kNumRays) {}
 
 void Environment::Reset(std::uint64_t seed, float* observation) {
   world_.Load(source_->Make(seed));

@@ -31,7 +31,8 @@ class Environment {
   void Reset(std::uint64_t seed, float* observation);
 
   /// Advances one second under action (kActionSize values, clipped to [-1, 1]); writes the new
-  /// observation (ObservationSize(config) floats). Must not be called after the episode ended without a Reset.
+  /// observation (ObservationSize(config) floats). Must not be called after the episode ended
+  /// without a Reset.
   StepResult Step(const double* action, float* observation);
 
   /// The simulated world (path, vessel, obstacles, last ranges), for traces and pictures.

@@ -1,7 +1,8 @@
 // The settings that decide what the numbers of an observation mean: the closeness transform and
-// the scan history (how many earlier scans follow the current one, how many steps apart). A trained model is only valid under the settings it was trained with, so model files
-// record them (spec interfaces.md, "Observation settings travel with models") in the format of a
-// policy's sidecar YAML file:
+// the scan history (how many earlier scans follow the current one, how many steps apart). A trained
+// model is only valid under the settings it was trained with, so model files record them (spec
+// interfaces.md, "Observation settings travel with models") in the format of a policy's sidecar
+// YAML file:
 //
 //   env:
 //     closeness: log

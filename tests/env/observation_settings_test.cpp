@@ -73,7 +73,8 @@ TEST(ObservationSettingsTest, AppliesToAnEnvironmentConfigurationAndBack) {
   EXPECT_EQ(log.closeness, ClosenessTransform::kLog);
   EXPECT_EQ(log.max_steps, 77);
   EXPECT_EQ(ObservationSettingsOf(log), ObservationSettings{ClosenessTransform::kLog});
-  const EnvironmentConfig history = WithObservationSettings(config, {ClosenessTransform::kLog, 3, 4});
+  const EnvironmentConfig history =
+      WithObservationSettings(config, {ClosenessTransform::kLog, 3, 4});
   EXPECT_EQ(history.scan_history, 3);
   EXPECT_EQ(history.scan_history_interval, 4);
   EXPECT_EQ(ObservationSize(history), 6 + 4 * 180);

@@ -44,8 +44,8 @@ TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
 // Makes `options` a VAE extractor of `architecture` with an untrained encoder saved in `folder`.
 void UseSavedEncoder(ActorCriticOptions& options, VaeArchitecture architecture,
                      const std::filesystem::path& folder) {
-  options.extractor.kind = architecture == VaeArchitecture::kDeep ? ExtractorKind::kVaeDeep
-                                                                  : ExtractorKind::kVaeShallow;
+  options.extractor.kind =
+      architecture == VaeArchitecture::kDeep ? ExtractorKind::kVaeDeep : ExtractorKind::kVaeShallow;
   options.extractor.encoder = folder / "encoder.pt";
   ExportEncoder(VaeEncoder(VaeEncoderOptions{architecture, 12}), ObservationSettings{},
                 options.extractor.encoder);

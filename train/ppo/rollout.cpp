@@ -86,8 +86,9 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
     buffer.final_values(t)[e] = 0.0f;
     if (buffer.bootstrapped(t)[e] == 0) continue;
     // Rare (one step in 2000 per world): value the one row on its own.
-    policy.Predict(env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(), 1,
-                   scratch_means_.data(), scratch_values_.data());
+    policy.Predict(
+        env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(), 1,
+        scratch_means_.data(), scratch_values_.data());
     buffer.final_values(t)[e] = scratch_values_[0];
   }
 }
