@@ -136,10 +136,17 @@ void BatchedEnvironment::Step(const double* actions, const BatchedOutputs& outpu
 
 template <typename Action>
 void BatchedEnvironment::StepAll(const Action* actions, const BatchedOutputs& outputs) {
-  pool_->ParallelFor(num_envs_, [this, actions, &outputs](int i) {
+  const auto step = [this, actions, &outputs](int world) {
+    StepWorld(world, actions + static_cast<std::ptrdiff_t>(world) * kActionSize, outputs);
+  };
+  if (pool_->num_threads() == 1) {  // one share: nothing to order, no clock to read
+    for (int world = 0; world < num_envs_; ++world) step(world);
+    return;
+  }
+  pool_->ParallelFor(num_envs_, [this, &step](int i) {
     const int world = step_order_[i];
     const std::uint64_t start = Ticks();
-    StepWorld(world, actions + static_cast<std::ptrdiff_t>(world) * kActionSize, outputs);
+    step(world);
     step_cost_[world] = Ticks() - start;
   });
   OrderSharesByCost();
@@ -147,12 +154,10 @@ void BatchedEnvironment::StepAll(const Action* actions, const BatchedOutputs& ou
 
 void BatchedEnvironment::OrderSharesByCost() {
   const int threads = pool_->num_threads();
-  if (threads == 1) return;
   for (int p = 0; p < threads; ++p) {
-    const auto begin = step_order_.begin() + static_cast<std::ptrdiff_t>(num_envs_) * p / threads;
-    const auto end =
-        step_order_.begin() + static_cast<std::ptrdiff_t>(num_envs_) * (p + 1) / threads;
-    std::sort(begin, end, [this](int a, int b) { return step_cost_[a] > step_cost_[b]; });
+    std::sort(step_order_.begin() + ThreadPool::ShareStart(num_envs_, threads, p),
+              step_order_.begin() + ThreadPool::ShareStart(num_envs_, threads, p + 1),
+              [this](int a, int b) { return step_cost_[a] > step_cost_[b]; });
   }
 }
 

@@ -141,7 +141,7 @@ class BatchedEnvironment {
   std::vector<std::uint8_t> terminated_;
   std::vector<std::uint8_t> truncated_;
   std::vector<std::optional<EpisodeMetrics>> finished_episodes_;
-  /// The world stepped as loop index i; each thread's share as the pool splits the indices.
+  /// The world stepped as loop index i; each thread's share as ThreadPool::ShareStart splits them.
   std::vector<int> step_order_;
   std::vector<std::uint64_t> step_cost_;  ///< of each world's last step, in clock ticks
 };

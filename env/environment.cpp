@@ -26,12 +26,6 @@ void Environment::Reset(std::uint64_t seed, float* observation) {
   steps_ = 0;
   cumulative_reward_ = 0.0;
   sum_abs_cte_ = 0.0;
-  if (!scan_ring_.empty()) {  // every earlier scan is the first one
-    WriteCloseness(scan_ring_.data());
-    for (auto slot = scan_ring_.begin() + kNumRays; slot != scan_ring_.end(); slot += kNumRays) {
-      std::copy_n(scan_ring_.begin(), kNumRays, slot);
-    }
-  }
   WriteObservation(observation);
 }
 
@@ -87,6 +81,9 @@ void Environment::WriteObservation(float* observation) {
     return scan_ring_.begin() + ((step % slots + slots) % slots) * kNumRays;
   };
   WriteCloseness(&*slot(steps_));
+  if (steps_ == 0) {  // a new episode: every earlier scan is its first one
+    for (std::int64_t s = 1; s < slots; ++s) std::copy_n(slot(0), kNumRays, slot(s));
+  }
   for (int k = 0; k <= config_.scan_history; ++k) {
     std::copy_n(slot(steps_ - std::int64_t{k} * config_.scan_history_interval), kNumRays,
                 scans + static_cast<std::ptrdiff_t>(k) * kNumRays);

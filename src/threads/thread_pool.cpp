@@ -144,11 +144,9 @@ void ThreadPool::StartLoop(int count, const std::function<void(int)>& body, bool
     const std::lock_guard<std::mutex> lock(mutex_);
     error_ = nullptr;
     for (int p = 0; p < participants; ++p) {
-      const auto share_start = static_cast<std::int64_t>(count) * p / participants;
-      const auto share_end = static_cast<std::int64_t>(count) * (p + 1) / participants;
-      shares_[p].cursor.store(MakeCursor(TagOf(generation), static_cast<int>(share_start)),
+      shares_[p].cursor.store(MakeCursor(TagOf(generation), ShareStart(count, participants, p)),
                               std::memory_order_relaxed);
-      shares_[p].end.store(static_cast<int>(share_end), std::memory_order_release);
+      shares_[p].end.store(ShareStart(count, participants, p + 1), std::memory_order_release);
     }
     body_.store(&body, std::memory_order_relaxed);
     num_participants_.store(participants, std::memory_order_relaxed);

@@ -28,6 +28,12 @@ class ThreadPool {
 
   int num_threads() const { return static_cast<int>(workers_.size()) + 1; }
 
+  /// The first index of participant p's own share of a loop of `count` indices among
+  /// `participants` (ParallelFor's caller is participant 0); its share ends where p + 1's begins.
+  static int ShareStart(int count, int participants, int p) {
+    return static_cast<int>(static_cast<std::int64_t>(count) * p / participants);
+  }
+
   /// Calls body(i) for i in [0, count) and returns when all calls are done. Each thread (the
   /// caller included) first runs its own contiguous share of the indices, the same one every
   /// loop, then takes indices left in the others' shares (a world that resets costs many steps,
