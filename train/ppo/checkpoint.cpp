@@ -36,6 +36,27 @@ void WriteRolloutStart(torch::serialize::OutputArchive& archive, const RolloutSt
                   ActionsTensor(start.worlds[i].actions));
   }
   archive.write(prefix + "world_episodes", torch::tensor(episodes, torch::kInt64));
+  const RunningVariance& variance = start.reward_scaling.return_variance;
+  archive.write(prefix + "reward_scaling_moments",
+                torch::tensor({variance.mean, variance.variance, variance.count}, torch::kFloat64));
+  archive.write(prefix + "reward_scaling_returns",
+                torch::tensor(start.reward_scaling.returns, torch::kFloat64));
+}
+
+// Absent from state files written before reward scaling existed: then it stays empty.
+RewardScalingState ReadRewardScaling(torch::serialize::InputArchive& archive) {
+  const std::string prefix = kRolloutStartPrefix;
+  RewardScalingState state;
+  torch::Tensor moments;
+  if (!archive.try_read(prefix + "reward_scaling_moments", moments)) return state;
+  moments = moments.to(torch::kFloat64).contiguous();
+  if (moments.numel() != 3) throw UserError("reward scaling moments: 3 values expected");
+  state.return_variance = {moments[0].item<double>(), moments[1].item<double>(),
+                           moments[2].item<double>()};
+  const torch::Tensor returns =
+      ReadTensor(archive, prefix + "reward_scaling_returns").to(torch::kFloat64).contiguous();
+  state.returns.assign(returns.data_ptr<double>(), returns.data_ptr<double>() + returns.numel());
+  return state;
 }
 
 // The rollout start recorded in `archive`, whose own counters are `counters`.
@@ -61,10 +82,12 @@ RolloutStart ReadRolloutStart(torch::serialize::InputArchive& archive,
         {static_cast<std::uint64_t>(episodes[i].item<std::int64_t>()),
          {actions.data_ptr<double>(), actions.data_ptr<double>() + actions.numel()}});
   }
+  start.reward_scaling = ReadRewardScaling(archive);
   const bool consistent =
-      start.counters.global_step >= 0 && start.counters.global_step <= counters.global_step &&
-      start.counters.episodes >= 0 && start.counters.episodes <= counters.episodes &&
-      (episodes >= 0).all().item<bool>();
+      start.reward_scaling.return_variance.variance >= 0.0 &&
+      start.reward_scaling.return_variance.count > 0.0 && start.counters.global_step >= 0 &&
+      start.counters.global_step <= counters.global_step && start.counters.episodes >= 0 &&
+      start.counters.episodes <= counters.episodes && (episodes >= 0).all().item<bool>();
   if (!consistent) throw UserError(file + ": inconsistent counters (damaged?)");
   return start;
 }

@@ -6,8 +6,8 @@
 // A checkpoint can fall inside a rollout (every checkpoint_interval steps, or on SIGKILL the last
 // one). The weights and the Adam state do not change within a rollout, so the state file also
 // records the start of the rollout in progress (RolloutStart: counters, sampling generator, the
-// worlds' histories); a resumed run replays that rollout and so ends bit for bit where an
-// uninterrupted run does.
+// worlds' histories, the reward scaler); a resumed run replays that rollout and so ends bit for bit
+// where an uninterrupted run does.
 #pragma once
 
 #include <torch/torch.h>
@@ -19,6 +19,7 @@
 #include "env/observation_settings.h"
 #include "models/actor_critic.h"
 #include "models/adam.h"
+#include "train/ppo/reward_scaling.h"
 
 namespace colav {
 
@@ -36,6 +37,9 @@ struct RolloutStart {
   TrainingCounters counters;         ///< wall_s: the training time up to the checkpoint
   torch::Tensor generator_state;     ///< before the rollout's sampling noise was drawn
   std::vector<WorldHistory> worlds;  ///< one per world
+  /// The reward scaler's (empty returns in a state file from before reward scaling, which was
+  /// then always off).
+  RewardScalingState reward_scaling;
 };
 
 /// Path of the training state in a run folder.

@@ -167,6 +167,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "ppo.timeouts_terminal", [](Run & o) -> auto& { return o.ppo.timeouts_terminal; },
           "end a timed-out episode's return like a terminal state (the reference) instead of "
           "bootstrapping it with V(final observation) (SB3)")
+      .Bool(
+          "ppo.normalize_reward", [](Run & o) -> auto& { return o.ppo.normalize_reward; },
+          "scale the rewards the learner sees by the running std of the discounted return, "
+          "clipped to +-10 (SB3's VecNormalize norm_reward; logs keep the environment's rewards)")
       .Number(
           "ppo.max_grad_norm", [](Run & o) -> auto& { return o.ppo.max_grad_norm; },
           "global gradient-norm clip", 0.0, 1e6)

@@ -26,6 +26,9 @@ struct PpoOptions {
   /// Time-outs end the return like a terminal state (the reference's training) instead of being
   /// bootstrapped with gamma * V(final observation) (Stable-Baselines3's rule).
   bool timeouts_terminal = false;
+  /// Scale the rewards the learner sees by the running spread of the discounted return
+  /// (reward_scaling.h; SB3's VecNormalize norm_reward). Off in the paper's recipe.
+  bool normalize_reward = false;
   PpoLossOptions loss;
   AdamOptions adam;
   /// How adam.learning_rate moves over the run.

@@ -16,10 +16,11 @@ bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeou
 }
 
 RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
-                                   std::uint64_t env_seed, bool timeouts_terminal)
+                                   std::uint64_t env_seed, const RolloutRules& rules)
     : env_seed_(env_seed),
-      timeouts_terminal_(timeouts_terminal),
+      rules_(rules),
       env_(config, n_envs, threads, env_seed),
+      reward_scaler_(n_envs, rules.gamma),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
       clipped_actions_(mean_.size()),
       scratch_values_(n_envs),
@@ -62,15 +63,19 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
 
     finished_.clear();
     for (int e = 0; e < N; ++e) {
-      buffer.rewards(t)[e] = env_.rewards()[e];
       buffer.dones(t)[e] = env_.terminated()[e] || env_.truncated()[e];
       buffer.bootstrapped(t)[e] = BootstrapsFromFinalObservation(
-          env_.terminated()[e] != 0, env_.truncated()[e] != 0, timeouts_terminal_);
+          env_.terminated()[e] != 0, env_.truncated()[e] != 0, rules_.timeouts_terminal);
       if (const auto& episode = env_.finished_episodes()[e]) {
         // The world has moved on to its next episode already.
         const std::uint64_t index = env_.histories()[e].episode - 1;
         finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, index), *episode});
       }
+    }
+    if (rules_.scale_rewards) {
+      reward_scaler_.Scale(env_.rewards(), buffer.dones(t), buffer.rewards(t));
+    } else {
+      std::copy_n(env_.rewards(), N, buffer.rewards(t));
     }
     ValueFinalObservations(policy, t, buffer);
     if (!after_step(finished_)) return false;

@@ -1,7 +1,8 @@
 // Collects PPO rollouts from the batched environment (SB3 collect_rollouts, reference-learning
 // 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] for the environment
-// only (the buffer keeps the unclipped sample and its log-probability), and a truncated episode's
-// final observation is valued for bootstrapping (BootstrapsFromFinalObservation).
+// only (the buffer keeps the unclipped sample and its log-probability), a truncated episode's
+// final observation is valued for bootstrapping (BootstrapsFromFinalObservation), and the rewards
+// are optionally scaled (reward_scaling.h).
 #pragma once
 
 #include <torch/torch.h>
@@ -14,6 +15,7 @@
 
 #include "env/batched_environment.h"
 #include "models/actor_critic_fast.h"
+#include "train/ppo/reward_scaling.h"
 #include "train/ppo/rollout_buffer.h"
 
 namespace colav {
@@ -32,12 +34,20 @@ struct FinishedEpisode {
 /// training, whose time-outs end episodes like a terminal state) none does.
 bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeouts_terminal);
 
+/// How the collector turns environment steps into training samples.
+struct RolloutRules {
+  bool timeouts_terminal = false;  ///< see BootstrapsFromFinalObservation
+  /// Scale the rewards by the spread of the discounted return (reward_scaling.h) with discount
+  /// `gamma`; otherwise the buffer holds the environment's rewards.
+  bool scale_rewards = false;
+  double gamma = 0.0;
+};
+
 class RolloutCollector {
  public:
-  /// n_envs worlds; env_seed determines every scenario they will play. `timeouts_terminal`: see
-  /// BootstrapsFromFinalObservation.
+  /// n_envs worlds; env_seed determines every scenario they will play.
   RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads, std::uint64_t env_seed,
-                   bool timeouts_terminal);
+                   const RolloutRules& rules);
 
   /// Called after every environment step with the episodes that just ended; returning false stops
   /// the rollout early.
@@ -53,6 +63,10 @@ class RolloutCollector {
   const std::vector<WorldHistory>& world_histories() const { return env_.histories(); }
   /// Puts the worlds back where world_histories() left them (BatchedEnvironment::Restore).
   void RestoreWorlds(const std::vector<WorldHistory>& histories) { env_.Restore(histories); }
+  /// The reward scaler's state (a checkpoint's record; unused when rewards are not scaled).
+  const RewardScalingState& reward_scaling() const { return reward_scaler_.state(); }
+  /// Throws std::invalid_argument if it was recorded for another number of worlds.
+  void RestoreRewardScaling(const RewardScalingState& state) { reward_scaler_.Restore(state); }
 
   /// Wall time spent stepping the worlds so far (s).
   double env_seconds() const { return env_seconds_; }
@@ -61,8 +75,9 @@ class RolloutCollector {
   void ValueFinalObservations(FastActorCritic& policy, int t, RolloutBuffer& buffer);
 
   std::uint64_t env_seed_;
-  bool timeouts_terminal_;
+  RolloutRules rules_;
   BatchedEnvironment env_;
+  RewardScaler reward_scaler_;
   std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
   std::vector<FinishedEpisode> finished_;
   double env_seconds_ = 0.0;

@@ -68,7 +68,8 @@ class PpoTrainer {
                               : RolloutStart{}),
         counters_(rollout_start_.counters),
         collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
-                   DeriveSeed(options_.seed, "worlds", 0), options_.timeouts_terminal),
+                   DeriveSeed(options_.seed, "worlds", 0),
+                   {options_.timeouts_terminal, options_.normalize_reward, options_.gamma}),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env)) {
@@ -160,12 +161,16 @@ class PpoTrainer {
     return {counters.episodes, counters.rollouts, counters.global_step};
   }
 
-  // Resuming: the sampling generator and the worlds as they were when the rollout in progress at
-  // the checkpoint started (LoadCheckpoint restored the weights and the optimiser).
+  // Resuming: the sampling generator, the worlds and the reward scaler as they were when the
+  // rollout in progress at the checkpoint started (LoadCheckpoint restored the weights and the
+  // optimiser).
   void ContinueFromRolloutStart() {
     generator_.set_state(rollout_start_.generator_state);
     try {
       collector_.RestoreWorlds(rollout_start_.worlds);
+      if (!rollout_start_.reward_scaling.returns.empty()) {
+        collector_.RestoreRewardScaling(rollout_start_.reward_scaling);
+      }
     } catch (const std::invalid_argument& error) {
       throw UserError("training state '" + TrainingStatePath(run_dir_).string() +
                       "' does not fit the configured worlds: " + error.what());
@@ -178,6 +183,7 @@ class PpoTrainer {
     rollout_start_.counters = counters_;
     rollout_start_.generator_state = generator_.get_state();
     rollout_start_.worlds = collector_.world_histories();
+    rollout_start_.reward_scaling = collector_.reward_scaling();
   }
 
   static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {

@@ -37,6 +37,7 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   start.counters = {28672, 12, 3, 15, 0.0};
   start.generator_state = generator.get_state();
   start.worlds = {{4, {0.5, -1.0, 1.0, 0.25}}, {7, {}}};
+  start.reward_scaling = {{-3.5, 12.25, 64.0001}, {-1.5, 20.0}};
   torch::randn({10}, generator);
   const TrainingCounters counters{30000, 12, 3, 17, 42.5};
   SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters, start,
@@ -60,6 +61,10 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   EXPECT_EQ(loaded.worlds[0].actions, start.worlds[0].actions);
   EXPECT_EQ(loaded.worlds[1].episode, 7U);
   EXPECT_TRUE(loaded.worlds[1].actions.empty());
+  EXPECT_EQ(loaded.reward_scaling.return_variance.mean, -3.5);
+  EXPECT_EQ(loaded.reward_scaling.return_variance.variance, 12.25);
+  EXPECT_EQ(loaded.reward_scaling.return_variance.count, 64.0001);
+  EXPECT_EQ(loaded.reward_scaling.returns, start.reward_scaling.returns);
   const auto original = model->parameters(), copy = restored->parameters();
   for (std::size_t i = 0; i < original.size(); ++i) EXPECT_TRUE(torch::equal(original[i], copy[i]));
   EXPECT_EQ(restored_updater.optimizer().step_count(), 3);
@@ -174,6 +179,29 @@ TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
   EXPECT_GT(CountLines(whole / "episodes.csv"), 5U);
   EXPECT_EQ(ReadFile(whole / "episodes.csv"), ReadFile(pieces / "episodes.csv"));
   EXPECT_EQ(ReadFile(whole / "policy.pt"), ReadFile(pieces / "policy.pt"));
+}
+
+// The reward scaler's returns run across the rollouts and episodes: a resume must restore them.
+TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const auto scaled = [](std::int64_t total_steps) {
+    Config config = ShortEpisodes(total_steps);
+    config.Set("ppo.normalize_reward", "true", "test");
+    return config;
+  };
+  const std::filesystem::path whole = directory.path() / "whole";
+  const std::filesystem::path pieces = directory.path() / "pieces";
+  const std::filesystem::path unscaled = directory.path() / "unscaled";
+  for (const auto& folder : {whole, pieces, unscaled}) std::filesystem::create_directories(folder);
+  Train(scaled(160), whole, /*resume=*/false);
+  Train(scaled(64), pieces, /*resume=*/false);
+  Train(scaled(160), pieces, /*resume=*/true);
+  Train(ShortEpisodes(160), unscaled, /*resume=*/false);
+  // EXPECT_TRUE: a failure would print the binary files otherwise.
+  EXPECT_TRUE(ReadFile(whole / "episodes.csv") == ReadFile(pieces / "episodes.csv"));
+  EXPECT_TRUE(ReadFile(whole / "policy.pt") == ReadFile(pieces / "policy.pt"));
+  // The scaling changes what is learnt, not what the environment reports.
+  EXPECT_NE(ReadFile(whole / "updates.csv"), ReadFile(unscaled / "updates.csv"));
 }
 
 TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogWithGarbageRows) {
