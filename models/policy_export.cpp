@@ -23,8 +23,15 @@ std::string FeaturesSource(FeatureExtractorImpl& extractor) {
     encodings =
         "h.reshape(obs.size(0), " + std::to_string(scans * extractor.perception_dims()) + ")";
   }
+  // A policy given observations of another width (another scan history) must not read part of
+  // them silently.
+  const std::string width = std::to_string(extractor.observation_size());
   std::ostringstream source;
   source << "def features(self, obs: Tensor) -> Tensor:\n"
+         << "    assert obs.dim() == 2 and obs.size(1) == " << width
+         << ", 'policy: observations [B, " << width << "] expected: " << kNavigationSize
+         << " navigation values, then " << scans << " scan(s) of " << kNumRays
+         << " closeness values (observation_settings)'\n"
          << "    h = " << closeness << ".unsqueeze(1)\n";
   for (std::size_t i = 0; i < extractor.layers().size(); ++i) {
     const PerceptionLayer& layer = extractor.layers()[i];

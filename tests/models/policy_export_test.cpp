@@ -76,17 +76,28 @@ TEST(PolicyExportTest, PoliciesOfThreeScansEqualTheInProcessPolicy) {
   ExpectExportMatches(vae, directory.path() / "vae.pt");
 }
 
-TEST(PolicyExportTest, APolicyOfThreeScansRejectsASingleScanObservation) {
+// Either way round: a policy of 3 scans given one scan, and one of 1 scan given three (which it
+// could otherwise read the first of, silently).
+TEST(PolicyExportTest, APolicyRejectsObservationsOfAnotherWidth) {
   testing_util::TemporaryFolder directory;
-  ActorCriticOptions options;
-  options.extractor.scans = 3;
-  ActorCritic model(options);
-  const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 1, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
-  const torch::Tensor obs = torch::rand({2, kObservationSize});
-  EXPECT_THROW(loaded.forward({obs}), std::exception);  // the interpreter's runtime_error
-  EXPECT_THROW(loaded.get_method("value")({obs}), std::exception);
+  for (const auto& [scans, given_scans] : {std::pair{3, 1}, std::pair{1, 3}}) {
+    ActorCriticOptions options;
+    options.extractor.scans = scans;
+    ActorCritic model(options);
+    const std::filesystem::path path = directory.path() / "policy.pt";
+    ExportPolicy(*model, 1, ObservationSettings{}, path);
+    torch::jit::Module loaded = torch::jit::load(path.string());
+    const std::string expected_width = std::to_string(kNavigationSize + scans * kNumRays);
+    const torch::Tensor obs = torch::rand({2, kNavigationSize + given_scans * kNumRays});
+    for (const std::string method : {"forward", "value", "features"}) {
+      try {
+        loaded.get_method(method)({obs});
+        ADD_FAILURE() << method << " accepted " << given_scans << " scan(s)";
+      } catch (const std::exception& error) {  // the interpreter's runtime_error
+        EXPECT_THAT(error.what(), testing::HasSubstr("observations [B, " + expected_width + "]"));
+      }
+    }
+  }
 }
 
 TEST(PolicyExportTest, RecordsTheObservationSettingsAndTheirLayout) {
