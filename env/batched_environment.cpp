@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 
 #if defined(__x86_64__)
 #include <x86intrin.h>
@@ -109,6 +110,11 @@ BatchedOutputs BatchedEnvironment::OwnOutputs() {
 void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed) { Reset(seed, OwnOutputs()); }
 
 void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed, const BatchedOutputs& outputs) {
+  ChooseResetEpisodes(seed);
+  pool_->ParallelFor(num_envs_, [this, &outputs](int i) { ResetWorld(i, outputs); });
+}
+
+void BatchedEnvironment::ChooseResetEpisodes(std::optional<std::uint64_t> seed) {
   if (seed) {
     seed_ = *seed;
     for (WorldHistory& history : histories_) history.episode = 0;
@@ -116,12 +122,19 @@ void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed, const BatchedO
     for (WorldHistory& history : histories_) ++history.episode;
   }
   started_ = true;
-  pool_->ParallelFor(num_envs_, [this, &outputs](int i) {
-    StartEpisode(i, &outputs.observations[static_cast<std::size_t>(i) * observation_size_]);
-    outputs.terminated[i] = outputs.truncated[i] = 0;
-    outputs.rewards[i] = 0.0f;
-    finished_episodes_[i].reset();
-  });
+}
+
+void BatchedEnvironment::ResetWorld(int world) { ResetWorld(world, OwnOutputs()); }
+
+void BatchedEnvironment::ResetWorld(int world, const BatchedOutputs& outputs) {
+  StartEpisode(world, &outputs.observations[static_cast<std::size_t>(world) * observation_size_]);
+  outputs.terminated[world] = outputs.truncated[world] = 0;
+  outputs.rewards[world] = 0.0f;
+  finished_episodes_[world].reset();
+}
+
+void BatchedEnvironment::StepWorld(int world, const double* action) {
+  StepWorld(world, action, OwnOutputs());
 }
 
 void BatchedEnvironment::Step(const float* actions) { StepAll(actions, OwnOutputs()); }
@@ -256,12 +269,20 @@ bool BatchedEnvironment::TakeNextEpisode(int world, float* observation) {
   return true;
 }
 
+void BatchedEnvironment::PrepareNextEpisodesWith(std::function<void(int world)> schedule) {
+  schedule_preparation_ = std::move(schedule);
+}
+
 void BatchedEnvironment::PrepareNextEpisode(int world) {
-  if (pool_->num_threads() == 1) return;  // no worker to prepare it
+  if (!schedule_preparation_ && pool_->num_threads() == 1) return;  // no worker to prepare it
   NextEpisode& next = *next_episodes_[world];
   next.seed = EpisodeSeed(world, histories_[world].episode + 1);
   next.state.store(NextEpisode::kQueued, std::memory_order_release);
-  pool_->RunWhenIdle([this, world] { BuildNextEpisode(world); });
+  if (schedule_preparation_) {
+    schedule_preparation_(world);
+  } else {
+    pool_->RunWhenIdle([this, world] { BuildNextEpisode(world); });
+  }
 }
 
 void BatchedEnvironment::BuildNextEpisode(int world) {

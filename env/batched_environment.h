@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -78,6 +79,24 @@ class BatchedEnvironment {
   void Step(const float* actions, const BatchedOutputs& outputs);
   void Step(const double* actions, const BatchedOutputs& outputs);
 
+  // One world at a time, for AsyncEnvironmentPool, which steps each world on whichever of its
+  // threads gets the world's action. With one thread (so no pool worker touches the worlds),
+  // ResetWorld and StepWorld of different worlds, and BuildNextEpisode of any, may run at once
+  // on different threads: each writes only its world's row of the environment's own results.
+  /// Reset's first half: chooses each world's next episode (episode 0 of `seed`, else the one
+  /// after its current episode), which ResetWorld then starts.
+  void ChooseResetEpisodes(std::optional<std::uint64_t> seed);
+  /// Reset's second half for one world: starts its chosen episode.
+  void ResetWorld(int world);
+  /// Step for one world: action is kActionSize values (clipped to [-1, 1]).
+  void StepWorld(int world, const double* action);
+  /// From now on a world's next episode is prepared by whoever `schedule(world)` arranges to
+  /// call BuildNextEpisode(world), instead of by this environment's idle workers (the worker
+  /// threads of an AsyncEnvironmentPool, which has no barrier to wait at).
+  void PrepareNextEpisodesWith(std::function<void(int world)> schedule);
+  /// Prepares world's next episode, unless it is no longer wanted; any thread, once per schedule.
+  void BuildNextEpisode(int world);
+
   /// Every world's history, for a checkpoint.
   const std::vector<WorldHistory>& histories() const { return histories_; }
   /// Puts every world back where `histories` (one per world, from histories()) left it by
@@ -116,9 +135,9 @@ class BatchedEnvironment {
   bool TakeNextEpisode(int world, float* observation);
   /// Queues the preparation of the episode after the current one.
   void PrepareNextEpisode(int world);
-  void BuildNextEpisode(int world);
   template <typename Action>
   void StepAll(const Action* actions, const BatchedOutputs& outputs);
+  void ResetWorld(int world, const BatchedOutputs& outputs);
   template <typename Action>
   void StepWorld(int world, const Action* action, const BatchedOutputs& outputs);
   void ReplayWorld(int world, const WorldHistory& history);
@@ -134,7 +153,8 @@ class BatchedEnvironment {
   std::vector<std::unique_ptr<Environment>> worlds_;
   std::vector<WorldHistory> histories_;
   std::vector<std::unique_ptr<NextEpisode>> next_episodes_;
-  std::unique_ptr<ThreadPool> pool_;  // after what its idle tasks use: destroyed first
+  std::unique_ptr<ThreadPool> pool_;               // after what its idle tasks use: destroyed first
+  std::function<void(int)> schedule_preparation_;  ///< if set, used instead of pool_
   std::vector<float> observations_;
   std::vector<float> final_observations_;
   std::vector<float> rewards_;

@@ -9,6 +9,7 @@
 #include "env/batched_environment.h"
 #include "env/scenario_file.h"
 #include "env/training_scenario.h"
+#include "python/async_vector_environment.h"
 #include "python/settings.h"
 #include "python/single_environment.h"
 #include "python/vector_environment.h"
@@ -68,5 +69,6 @@ PYBIND11_MODULE(_colav, module) {
   colav::python::BindSettings(module);
   colav::python::BindScenarios(module);
   colav::python::BindVectorEnvironment(module);
+  colav::python::BindAsyncVectorEnvironment(module);
   colav::python::BindSingleEnvironment(module);
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "env/batched_environment.h"
+#include "python/batch_arrays.h"
 #include "python/settings.h"
 
 namespace colav::python {
@@ -46,23 +47,12 @@ class VectorEnvironment {
   py::dict FinishedEpisodes() const;
 
  private:
-  // One set of result arrays and the pointers BatchedEnvironment writes through.
-  struct OutputArrays {
-    OutputArrays(int num_envs, int observation_size);
-    py::array_t<float> observations;
-    py::array_t<float> final_observations;
-    py::array_t<float> rewards;
-    py::array_t<bool> terminated;
-    py::array_t<bool> truncated;
-    BatchedOutputs pointers;
-  };
-
-  OutputArrays& NextOutputs();
+  BatchArrays& NextOutputs();
   template <typename Actions>
-  int StepWith(const Actions& actions, const OutputArrays& outputs);
+  int StepWith(const Actions& actions, const BatchArrays& outputs);
 
   BatchedEnvironment envs_;
-  std::array<OutputArrays, 2> outputs_;
+  std::array<BatchArrays, 2> outputs_;
   int current_ = 0;
   bool started_ = false;  // stepping needs a first reset
 };

@@ -7,6 +7,11 @@
 
     env = colav.make(scenario="configs/scenarios/head-on.yaml")  # one world, Gymnasium Env
 
+    envs = colav.make_async(num_envs=8, batch_size=4)  # EnvPool's asynchronous mode
+    envs.async_reset()
+    obs, reward, terminated, truncated, info = envs.recv()       # the first 4 worlds done
+    envs.send(actions, info["env_id"])                           # their next step
+
 Observations are float32 [6 + 180*(1+scan_history)], [186] by default (OBSERVATION_SIZE): u, v,
 r, cte/100, heading error, look-ahead heading error, then the closeness of rays 0-179 (README,
 "Observation"). With scan_history=H, the 180 closeness values of the scans k*scan_history_interval
@@ -16,6 +21,7 @@ Bad settings, seeds or scenario files raise ValueError naming the key or file.
 """
 
 from . import _colav
+from ._async import AsyncVectorEnv, make_async
 from ._envs import RENDER_SIZE, Env, VectorEnv, make, make_vec
 from ._spaces import ACTION_SIZE, OBSERVATION_SIZE, Box, gymnasium
 
@@ -50,7 +56,7 @@ def evaluation_scenarios(count=100, seed=0):
 
 
 __all__ = [
-    "ACTION_SIZE", "OBSERVATION_SIZE", "Box", "Env", "Scenario", "UserError", "VectorEnv",
-    "env_settings", "gymnasium", "load_scenario", "make", "make_vec", "evaluation_scenario_seeds",
-    "evaluation_scenarios", "training_scenario",
+    "ACTION_SIZE", "OBSERVATION_SIZE", "AsyncVectorEnv", "Box", "Env", "Scenario", "UserError",
+    "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async", "make_vec",
+    "evaluation_scenario_seeds", "evaluation_scenarios", "training_scenario",
 ]

@@ -45,6 +45,20 @@ def _whole_number(name, value, minimum):
     return int(value)
 
 
+def _worlds(num_envs, scenarios):
+    """(number of worlds, the loaded scenarios or None) of the vector environments' num_envs and
+    scenarios arguments: num_envs training worlds (8 by default), or one per scenario."""
+    if scenarios is None:
+        return (8 if num_envs is None else _whole_number("num_envs", num_envs, 1)), None
+    loaded = [_scenario(scenario) for scenario in scenarios]
+    if not loaded or num_envs not in (None, len(loaded)):
+        raise ValueError(
+            f"num_envs: {num_envs} worlds for {len(loaded)} scenarios (give one or more "
+            "scenarios and leave num_envs out)"
+        )
+    return len(loaded), loaded
+
+
 def _optional_seed(seed):
     return None if seed is None else _whole_number("seed", seed, 0)
 
@@ -157,18 +171,12 @@ class VectorEnv(_VectorEnvBase):
         resolved = _resolve(settings, "colav.VectorEnv")
         self.settings = resolved.values
         threads = _whole_number("num_threads", num_threads, 0)
-        if scenarios is None:
-            count = 8 if num_envs is None else _whole_number("num_envs", num_envs, 1)
+        count, loaded = _worlds(num_envs, scenarios)
+        if loaded is None:
             self._core = _colav.VectorEnvironment(
                 resolved, count, _whole_number("seed", seed, 0), threads
             )
         else:
-            loaded = [_scenario(scenario) for scenario in scenarios]
-            if not loaded or num_envs not in (None, len(loaded)):
-                raise ValueError(
-                    f"num_envs: {num_envs} worlds for {len(loaded)} scenarios (give one or more "
-                    "scenarios and leave num_envs out)"
-                )
             self._core = _colav.VectorEnvironment(resolved, loaded, threads)
         self.num_envs = self._core.num_envs
         self.single_observation_space = observation_space(self._core.observation_size)
