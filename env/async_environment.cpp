@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "src/threads/cpu_relax.h"
+
 namespace colav {
 namespace {
 
@@ -27,14 +29,6 @@ constexpr int kMaxPassOvers = 4;
 // A thread waiting for the spin lock yields its core after this many polls: the holder may have
 // been preempted on a busy machine.
 constexpr int kLockPollsBeforeYield = 256;
-
-void CpuRelax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#endif
-}
 
 // Polls `ready` for up to kSpinTime; returns whether it holds.
 template <typename Ready>

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "src/threads/cpu_relax.h"
+
 namespace colav {
 namespace {
 
@@ -17,14 +19,6 @@ constexpr auto kYieldTime = std::chrono::milliseconds(2);
 constexpr int kPollsPerClockRead = 64;
 
 constexpr std::chrono::milliseconds kPollInterval(100);
-
-void CpuRelax() {
-#if defined(__x86_64__) || defined(__i386__)
-  __builtin_ia32_pause();
-#elif defined(__aarch64__)
-  asm volatile("yield");
-#endif
-}
 
 // Polls `ready` (spinning, then yielding as above) until it holds or `patience` has passed;
 // returns whether it holds.

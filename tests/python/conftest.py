@@ -23,3 +23,15 @@ def run_program(name, *args):
 @pytest.fixture
 def source_dir():
     return SOURCE_DIR
+
+
+@pytest.fixture(scope="module")
+def deep_vae(tmp_path_factory):
+    """A dataset and a DeepConvVAE encoder.pt as generate_dataset and train_vae write them (tiny
+    data, one epoch): (scans.h5, encoder.pt)."""
+    folder = tmp_path_factory.mktemp("vae")
+    run_program("generate_dataset", "--out", folder / "data.h5", "--sim-scans", 200,
+                "--synthetic-scans", 60)
+    run_program("train_vae", "--data", folder / "data.h5", "--model", "deep", "--epochs", 1,
+                "--seeds", 1, "--out", folder / "vae")
+    return folder / "data.h5", folder / "vae" / "seed_0" / "encoder.pt"

@@ -6,21 +6,16 @@ import subprocess
 import pytest
 import torch
 
-from conftest import SOURCE_DIR, run_program
+from conftest import SOURCE_DIR
 
 AGENTS_DIR = SOURCE_DIR.parent / "shared" / "reference-agents"
 SCRIPT = SOURCE_DIR / "scripts" / "authors_encoder.py"
 
 
-@pytest.fixture(scope="module")
-def deep_template(tmp_path_factory):
-    """A DeepConvVAE encoder.pt as train_vae writes one (tiny data, one epoch)."""
-    folder = tmp_path_factory.mktemp("vae")
-    run_program("generate_dataset", "--out", folder / "data.h5", "--sim-scans", 200,
-                "--synthetic-scans", 60)
-    run_program("train_vae", "--data", folder / "data.h5", "--model", "deep", "--epochs", 1,
-                "--seeds", 1, "--out", folder / "vae")
-    return folder / "vae" / "seed_0" / "encoder.pt"
+@pytest.fixture
+def deep_template(deep_vae):
+    """A DeepConvVAE encoder.pt as train_vae writes one."""
+    return deep_vae[1]
 
 
 def convert(*args):

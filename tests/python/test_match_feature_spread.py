@@ -6,20 +6,9 @@ import subprocess
 import pytest
 import torch
 
-from conftest import SOURCE_DIR, run_program
+from conftest import SOURCE_DIR
 
 SCRIPT = SOURCE_DIR / "scripts" / "match_feature_spread.py"
-
-
-@pytest.fixture(scope="module")
-def vae(tmp_path_factory):
-    """A dataset and a DeepConvVAE encoder.pt as train_vae writes them (tiny data, one epoch)."""
-    folder = tmp_path_factory.mktemp("vae")
-    run_program("generate_dataset", "--out", folder / "data.h5", "--sim-scans", 200,
-                "--synthetic-scans", 60)
-    run_program("train_vae", "--data", folder / "data.h5", "--model", "deep", "--epochs", 1,
-                "--seeds", 1, "--out", folder / "vae")
-    return folder / "data.h5", folder / "vae" / "seed_0" / "encoder.pt"
 
 
 def match(*args):
@@ -27,8 +16,8 @@ def match(*args):
                           capture_output=True, text=True)
 
 
-def test_the_last_convolution_takes_the_reference_spread(vae, tmp_path):
-    scans, encoder_path = vae
+def test_the_last_convolution_takes_the_reference_spread(deep_vae, tmp_path):
+    scans, encoder_path = deep_vae
     # A reference whose features spread 2.5 times as much: the same encoder, last conv x 2.5.
     reference = torch.jit.load(str(encoder_path))
     with torch.no_grad():
@@ -45,8 +34,8 @@ def test_the_last_convolution_takes_the_reference_spread(vae, tmp_path):
     assert out.observation_settings == original.observation_settings
 
 
-def test_an_encoder_matched_to_itself_is_unchanged(vae, tmp_path):
-    scans, encoder_path = vae
+def test_an_encoder_matched_to_itself_is_unchanged(deep_vae, tmp_path):
+    scans, encoder_path = deep_vae
     result = match(encoder_path, encoder_path, scans, tmp_path / "out.pt", "--closeness", "linear")
     assert result.returncode == 0, result.stderr
     assert "last convolution x 1.0000" in result.stdout
@@ -54,8 +43,8 @@ def test_an_encoder_matched_to_itself_is_unchanged(vae, tmp_path):
 
 @pytest.mark.parametrize("bad, message", [("encoder", "not a TorchScript file"),
                                           ("scans", "not a dataset of generate_dataset")])
-def test_bad_input_is_refused_in_one_line(vae, tmp_path, bad, message):
-    scans, encoder_path = vae
+def test_bad_input_is_refused_in_one_line(deep_vae, tmp_path, bad, message):
+    scans, encoder_path = deep_vae
     junk = tmp_path / "junk"
     junk.write_text("not a file of ours\n")
     args = [encoder_path, junk if bad == "encoder" else encoder_path,
