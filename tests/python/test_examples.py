@@ -64,5 +64,10 @@ def test_run_policy_builds_the_env_of_the_recorded_observation_settings(tmp_path
     assert "'closeness': 'log', 'scan_history': '3', 'scan_history_interval': '5'" in output
 
 
-def test_bench_python():
-    assert "steps/s" in run_example("bench_python.py", "--seconds", 0.2, "--envs", 2)
+def test_bench_python(tmp_path):
+    assert "random actions" in run_example("bench_python.py", "--seconds", 0.2, "--envs", 2)
+    policy = torch.jit.script(torch.nn.Sequential(torch.nn.Linear(186, 2), torch.nn.Tanh()))
+    policy.save(str(tmp_path / "policy.pt"))
+    output = run_example("bench_python.py", "--seconds", 0.2, "--envs", 4, "--batch", 2,
+                         "--policy", tmp_path / "policy.pt")
+    assert "asynchronous batches of 2), policy actions:" in output and "steps/s" in output
