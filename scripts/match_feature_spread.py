@@ -53,8 +53,8 @@ def load_closeness(path, transform):
 
 def feature_spread(encoder_path, closeness):
     """Mean standard deviation of the features fc_mu receives: the encoder with fc_mu made the
-    identity computes them (a fresh copy, the caller's encoder is untouched)."""
-    probe = torch.jit.load(encoder_path)
+    identity computes them (a copy loaded for this, so no caller's encoder is changed)."""
+    probe = load_encoder(encoder_path)
     with torch.no_grad():
         size = probe.fc_mu_weight.shape[1]
         probe.fc_mu_weight.copy_(torch.eye(size))
@@ -72,7 +72,6 @@ def main():
                         help="closeness transform of the scans (default: log, the paper recipe's)")
     args = parser.parse_args()
     encoder = load_encoder(args.encoder)
-    load_encoder(args.reference)
     closeness = load_closeness(args.scans, args.closeness)
     factor = feature_spread(args.reference, closeness) / feature_spread(args.encoder, closeness)
     with torch.no_grad():
