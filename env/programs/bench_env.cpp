@@ -2,11 +2,13 @@
 // together, and with --async-batch asynchronously, EnvPool style), plus the cost of the hot-path
 // pieces. Ends with the headline lines of shared/spec/interfaces.md.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <functional>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "env/async_environment.h"
 #include "env/batched_environment.h"
@@ -27,19 +29,66 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMaxEnvs = 1024;
 constexpr int kMaxThreads = 256;
 
-// Runs `step` (which performs `per_call` env steps) repeatedly for about `seconds` and returns
-// steps per second.
-double Throughput(double seconds, std::int64_t per_call, const std::function<void()>& step) {
-  for (int k = 0; k < 100; ++k) step();  // warm-up
+// Calls `step` (which performs `per_call` env steps) in blocks of 100 for about `seconds`;
+// returns the steps performed and the time they took.
+struct Measured {
   std::int64_t steps = 0;
+  double seconds = 0.0;
+  double PerSecond() const { return static_cast<double>(steps) / seconds; }
+};
+
+Measured Run(double seconds, std::int64_t per_call, const std::function<void()>& step) {
+  Measured measured;
   const auto start = Clock::now();
-  double elapsed = 0.0;
-  while (elapsed < seconds) {
+  while (measured.seconds < seconds) {
     for (int k = 0; k < 100; ++k) step();
-    steps += 100 * per_call;
-    elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    measured.steps += 100 * per_call;
+    measured.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   }
-  return static_cast<double>(steps) / elapsed;
+  return measured;
+}
+
+void WarmUp(const std::function<void()>& step) {
+  for (int k = 0; k < 100; ++k) step();
+}
+
+// Steps per second of `step` over about `seconds`, after a warm-up.
+double Throughput(double seconds, std::int64_t per_call, const std::function<void()>& step) {
+  WarmUp(step);
+  return Run(seconds, per_call, step).PerSecond();
+}
+
+// A case measured against the 1-thread case in alternating rounds.
+struct Case {
+  std::int64_t per_call = 0;
+  std::function<void()> step;
+  Measured total;
+  std::vector<double> ratios;  ///< of each round's rate to the 1-thread rate of the same round
+};
+
+// Measures `one_thread` and each of `others` in `rounds` alternating rounds of seconds / rounds
+// each: the speed of this virtual machine drifts by 15 % or more over a few seconds (1-thread
+// runs of the same binary a few seconds apart gave 272,000-355,000 steps/s), and a drift falls on
+// the cases of one round alike.
+void MeasureInRounds(double seconds, int rounds, Case& one_thread, std::vector<Case*> others) {
+  others.insert(others.begin(), &one_thread);
+  for (Case* c : others) WarmUp(c->step);
+  for (int round = 0; round < rounds; ++round) {
+    double one_thread_rate = 0.0;
+    for (Case* c : others) {
+      const Measured measured = Run(seconds / rounds, c->per_call, c->step);
+      c->total.steps += measured.steps;
+      c->total.seconds += measured.seconds;
+      if (c == &one_thread) one_thread_rate = measured.PerSecond();
+      c->ratios.push_back(measured.PerSecond() / one_thread_rate);
+    }
+  }
+}
+
+double Median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const std::size_t n = values.size();
+  return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 // One environment, auto-resetting; `random_actions` draws uniform actions, else full thrust
@@ -63,29 +112,48 @@ double SingleEnvironment(double seconds, bool random_actions, std::uint64_t seed
   });
 }
 
-double Batched(double seconds, int num_envs, int num_threads, std::uint64_t seed) {
-  BatchedEnvironment envs(EnvironmentConfig{}, num_envs, num_threads, seed);
-  envs.Reset();
-  Rng rng(seed);
-  std::vector<float> actions(static_cast<std::size_t>(num_envs) * kActionSize);
-  return Throughput(seconds, num_envs, [&] {
-    for (float& a : actions) a = static_cast<float>(Uniform(rng, -1.0, 1.0));
-    envs.Step(actions.data());
-  });
+Case Batched(int num_envs, int num_threads, std::uint64_t seed) {
+  auto envs =
+      std::make_shared<BatchedEnvironment>(EnvironmentConfig{}, num_envs, num_threads, seed);
+  envs->Reset();
+  auto rng = std::make_shared<Rng>(seed);
+  auto actions =
+      std::make_shared<std::vector<float>>(static_cast<std::size_t>(num_envs) * kActionSize);
+  Case batched;
+  batched.per_call = num_envs;
+  batched.step = [envs, rng, actions] {
+    for (float& a : *actions) a = static_cast<float>(Uniform(*rng, -1.0, 1.0));
+    envs->Step(actions->data());
+  };
+  return batched;
 }
 
 // Recv a batch, draw its actions, Send them: the loop of an EnvPool-style trainer.
-double Asynchronous(double seconds, int num_envs, int batch_size, int num_threads,
-                    std::uint64_t seed) {
-  AsyncEnvironmentPool pool(EnvironmentConfig{}, num_envs, batch_size, num_threads, seed);
-  pool.Reset();
-  Rng rng(seed);
-  std::vector<float> actions(static_cast<std::size_t>(batch_size) * kActionSize);
-  return Throughput(seconds, batch_size, [&] {
-    pool.Recv();
-    for (float& a : actions) a = static_cast<float>(Uniform(rng, -1.0, 1.0));
-    pool.Send(actions.data(), pool.env_ids(), batch_size);
-  });
+Case Asynchronous(int num_envs, int batch_size, int num_threads, std::uint64_t seed) {
+  auto pool = std::make_shared<AsyncEnvironmentPool>(EnvironmentConfig{}, num_envs, batch_size,
+                                                     num_threads, seed);
+  pool->Reset();
+  auto rng = std::make_shared<Rng>(seed);
+  auto actions =
+      std::make_shared<std::vector<float>>(static_cast<std::size_t>(batch_size) * kActionSize);
+  Case asynchronous;
+  asynchronous.per_call = batch_size;
+  asynchronous.step = [pool, rng, actions, batch_size] {
+    pool->Recv();
+    for (float& a : *actions) a = static_cast<float>(Uniform(*rng, -1.0, 1.0));
+    pool->Send(actions->data(), pool->env_ids(), batch_size);
+  };
+  return asynchronous;
+}
+
+// The rate of `c` over all its rounds, its ratio to the 1-thread case's, and the spread of the
+// rounds' ratios.
+void PrintAgainstOneThread(const std::string& label, const Case& c, const Case& one_thread) {
+  const auto [lowest, highest] = std::minmax_element(c.ratios.begin(), c.ratios.end());
+  std::printf("%-44s %9.0f steps/s (%.2fx of 1 thread; rounds %.2f-%.2fx, median %.2fx)\n",
+              label.c_str(), c.total.PerSecond(),
+              c.total.PerSecond() / one_thread.total.PerSecond(), *lowest, *highest,
+              Median(c.ratios));
 }
 
 int BenchEnv(int argc, char** argv) {
@@ -98,6 +166,11 @@ int BenchEnv(int argc, char** argv) {
   AddNumberFlag(app, "--envs", num_envs, "worlds in the batched case", 1, kMaxEnvs);
   AddNumberFlag(app, "--threads", num_threads, "threads in the batched case (default: all cores)",
                 1, kMaxThreads);
+  int rounds = 10;
+  AddNumberFlag(app, "--rounds", rounds,
+                "the batched cases are measured in this many alternating rounds, so that a drift "
+                "of the machine's speed falls on all alike",
+                1, 1000);
   int async_batch = 0;
   AddNumberFlag(app, "--async-batch", async_batch,
                 "also step the worlds asynchronously, EnvPool style, in batches of this many "
@@ -117,19 +190,29 @@ int BenchEnv(int argc, char** argv) {
   std::printf("1 thread, fixed action (full thrust)   %12.0f steps/s\n", fixed);
   const double random = SingleEnvironment(seconds, true, seed);
   std::printf("1 thread, random actions              %12.0f steps/s\n", random);
-  const double batched_one_thread = Batched(seconds, num_envs, 1, seed);
-  std::printf("%d worlds on 1 thread, random actions  %12.0f steps/s\n", num_envs,
-              batched_one_thread);
-  const double batched = Batched(seconds, num_envs, num_threads, seed);
-  std::printf("%d worlds on %d threads, random actions %12.0f steps/s (%.2fx of 1 thread)\n",
-              num_envs, num_threads, batched, batched / batched_one_thread);
+  Case one_thread = Batched(num_envs, 1, seed);
+  Case batched = Batched(num_envs, num_threads, seed);
+  std::vector<Case*> against_one_thread = {&batched};
+  Case asynchronous;
   if (async_batch > 0) {
-    const double asynchronous = Asynchronous(seconds, num_envs, async_batch, num_threads, seed);
-    std::printf("%d worlds on %d threads, async batches of %d %12.0f steps/s (%.2fx of 1 thread)\n",
-                num_envs, num_threads, async_batch, asynchronous,
-                asynchronous / batched_one_thread);
+    asynchronous = Asynchronous(num_envs, async_batch, num_threads, seed);
+    against_one_thread.push_back(&asynchronous);
   }
-  std::printf("env_steps_per_s_1thread: %.0f\nenv_steps_per_s_batched: %.0f\n", random, batched);
+  MeasureInRounds(seconds, rounds, one_thread, against_one_thread);
+  std::printf("%-44s %9.0f steps/s (%d alternating rounds of %.2f s per case)\n",
+              (std::to_string(num_envs) + " worlds on 1 thread, random actions").c_str(),
+              one_thread.total.PerSecond(), rounds, seconds / rounds);
+  PrintAgainstOneThread(std::to_string(num_envs) + " worlds on " + std::to_string(num_threads) +
+                            " threads, random actions",
+                        batched, one_thread);
+  if (async_batch > 0) {
+    PrintAgainstOneThread(std::to_string(num_envs) + " worlds on " + std::to_string(num_threads) +
+                              " threads, async batches of " + std::to_string(async_batch),
+                          asynchronous, one_thread);
+  }
+  const double batched_rate = batched.total.PerSecond();
+  std::printf("env_steps_per_s_1thread: %.0f\nenv_steps_per_s_batched: %.0f\n", random,
+              batched_rate);
   return 0;
 }
 
