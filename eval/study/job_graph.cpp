@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <utility>
 
 namespace colav {
 namespace {
@@ -40,6 +41,18 @@ EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::p
   return group;
 }
 
+// A job running `program` with `args`, complete once `complete_marker` exists.
+StudyJob NewJob(std::string id, std::string program, std::vector<std::string> args,
+                std::filesystem::path complete_marker, double estimated_s) {
+  StudyJob job;
+  job.id = std::move(id);
+  job.program = std::move(program);
+  job.args = std::move(args);
+  job.complete_marker = std::move(complete_marker);
+  job.estimated_s = estimated_s;
+  return job;
+}
+
 std::size_t AddJob(std::vector<StudyJob>& jobs, StudyJob job) {
   jobs.push_back(std::move(job));
   return jobs.size() - 1;
@@ -51,15 +64,11 @@ void AddTrainingFigureJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
                            const std::map<std::string, std::size_t>& policy_jobs) {
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     const std::filesystem::path png = out / TrainingFigurePath(config.name);
-    StudyJob job{"figures/training/" + config.name,
-                 "plot_training",
-                 {"--out", png.string(), "--title",
-                  "Training of " + config.name + ", " + std::to_string(spec.ppo_seeds) + " seeds"},
-                 {},
-                 png,
-                 {},
-                 {},
-                 kFigureSeconds};
+    StudyJob job =
+        NewJob("figures/training/" + config.name, "plot_training",
+               {"--out", png.string(), "--title",
+                "Training of " + config.name + ", " + std::to_string(spec.ppo_seeds) + " seeds"},
+               png, kFigureSeconds);
     job.check_configuration = false;  // every argument comes from the study, none from the user
     for (int k = 0; k < spec.ppo_seeds; ++k) {
       const std::filesystem::path dir = out / "ppo" / config.name / ("seed_" + std::to_string(k));
@@ -101,34 +110,27 @@ std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
 std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem::path& out) {
   std::vector<StudyJob> jobs;
   const std::filesystem::path data = out / "data" / "scans.h5";
-  StudyJob dataset{"data", "generate_dataset", {"--out", data.string()}, {}, data, {},
-                   {},     kDatasetSeconds};
+  StudyJob dataset =
+      NewJob("data", "generate_dataset", {"--out", data.string()}, data, kDatasetSeconds);
   AppendOverrides(dataset.args, spec.dataset_overrides);
   const std::size_t dataset_index = AddJob(jobs, dataset);
 
   if (spec.vae_figures) {
     const std::filesystem::path dir = out / VaeFiguresFolder();
-    AddJob(jobs, {"figures/vae",
-                  "vae_figures",
-                  {"--data", data.string(), "--out", dir.string()},
-                  {},
-                  dir / "latent_kde.png",
-                  {},
-                  {dataset_index},
-                  kVaeFiguresSeconds});
+    StudyJob figures =
+        NewJob("figures/vae", "vae_figures", {"--data", data.string(), "--out", dir.string()},
+               dir / "latent_kde.png", kVaeFiguresSeconds);
+    figures.dependencies = {dataset_index};
+    AddJob(jobs, figures);
   }
   std::map<std::string, std::size_t> vae_jobs;
   for (const VaeSpec& vae : spec.vaes) {
     const std::filesystem::path dir = out / "vae" / vae.name;
-    StudyJob job{"vae/" + vae.name,
-                 "train_vae",
-                 {"--data", data.string(), "--model", vae.model, "--seeds",
-                  std::to_string(vae.seeds), "--out", dir.string()},
-                 {},
-                 dir / "summary.json",
-                 {},
-                 {dataset_index},
-                 kVaeSecondsPerSeed * vae.seeds};
+    StudyJob job = NewJob("vae/" + vae.name, "train_vae",
+                          {"--data", data.string(), "--model", vae.model, "--seeds",
+                           std::to_string(vae.seeds), "--out", dir.string()},
+                          dir / "summary.json", kVaeSecondsPerSeed * vae.seeds);
+    job.dependencies = {dataset_index};
     AppendOverrides(job.args, vae.overrides);
     vae_jobs[vae.name] = AddJob(jobs, job);
   }
@@ -138,14 +140,11 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
     for (int k = 0; k < spec.ppo_seeds; ++k) {
       const std::string id = "ppo/" + config.name + "/seed_" + std::to_string(k);
       const std::filesystem::path dir = out / id;
-      StudyJob job{id,
-                   "train_ppo",
-                   {"--extractor", config.extractor},
-                   {"--resume", dir.string()},
-                   dir / "summary.json",
-                   dir / "training_state.pt",
-                   {},
-                   static_cast<double>(spec.ppo_steps) / kPpoStepsPerSecond};
+      StudyJob job =
+          NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
+                 static_cast<double>(spec.ppo_steps) / kPpoStepsPerSecond);
+      job.resume_args = {"--resume", dir.string()};
+      job.resume_marker = dir / "training_state.pt";
       if (config.extractor != "baseline") {
         const VaeSpec& vae = *std::find_if(spec.vaes.begin(), spec.vaes.end(),
                                            [&](const VaeSpec& v) { return v.name == config.vae; });
@@ -168,15 +167,9 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path dir = out / "eval" / group.scenario_set;
-    StudyJob job{
-        "eval/" + group.scenario_set,
-        "evaluate",
-        {},
-        {},
-        dir / "summary.json",
-        {},
-        {},
-        static_cast<double>(group.episodes * group.models.size()) / kEvaluationEpisodesPerSecond};
+    StudyJob job = NewJob(
+        "eval/" + group.scenario_set, "evaluate", {}, dir / "summary.json",
+        static_cast<double>(group.episodes * group.models.size()) / kEvaluationEpisodesPerSecond);
     for (std::size_t m = 0; m < group.models.size(); ++m) {
       const auto writer = policy_jobs.find(group.policies[m].string());
       if (writer != policy_jobs.end()) job.dependencies.push_back(writer->second);
