@@ -295,6 +295,13 @@ void AnalyseCollisions(std::vector<Policy>& policies,
   std::cout << "\n" << markdown;
 }
 
+// What an evaluation writes into its folder besides config.yaml and its log: a run with
+// --overwrite removes them first, so no figure, replay or collision analysis of the earlier run
+// stays beside the new summary.
+const std::vector<std::string> kEvaluationOutputs = {
+    "episodes.csv", "summary.json",   "summary.md",   "figures",
+    "replays",      "collisions.csv", "collisions.md"};
+
 int Evaluate(int argc, char** argv) {
   CLI::App app{
       "Runs trained policies (TorchScript policy.pt) with deterministic actions on the shared "
@@ -357,7 +364,8 @@ int Evaluate(int argc, char** argv) {
       on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
                : TestEpisodes(seed, options.episodes);
   const RunFolder folder = RunFolder::Create(out, "evaluate");
-  folder.StartNewRun({"summary.json"}, {}, overwrite, "replace it with --overwrite");
+  folder.StartNewRun({"summary.json"}, kEvaluationOutputs, overwrite,
+                     "replace it with --overwrite");
   InitLogging("evaluate", folder.LogPath(), false);
   folder.WriteResolvedConfig(config);
   spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),

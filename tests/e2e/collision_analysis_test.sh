@@ -2,7 +2,7 @@
 # evaluate --analyse-collisions end to end: a policy that always goes full thrust ahead meets the
 # head-on scenario's vessel; the analysis must find that collision on the step simulate reports
 # for the same actions, name the vessel dead ahead with the warning time the closing speed gives,
-# find it avoidable, and count it in collisions.md.
+# find it avoidable, and count it in collisions.md; a rerun with --overwrite removes that analysis.
 #
 # usage: collision_analysis_test.sh BIN_DIR WORK_DIR SOURCE_DIR
 set -euo pipefail
@@ -54,4 +54,12 @@ awk -v b="$bearing" 'BEGIN { exit !(b > -5 && b < 5) }' || fail "bearing $bearin
 [ "$from_detection,$before60" = "1,1" ] || fail "not found avoidable: $from_detection,$before60"
 grep -q "^| full_thrust | 1 | 1 (100.0 %) | 1 (100.0 %) | 0 (0.0 %) |" "$work/eval/collisions.md" ||
   fail "collisions.md: $(cat "$work/eval/collisions.md")"
+
+# A rerun with --overwrite and without the analysis leaves no analysis of the earlier run behind.
+"$bin/evaluate" --policy "$work/full_thrust.pt" --name full_thrust --scenario "$scenario" \
+  --overwrite --out "$work/eval" >"$work/evaluate2.log" 2>&1 ||
+  fail "evaluate --overwrite failed: $(tail -3 "$work/evaluate2.log")"
+[ -f "$work/eval/summary.json" ] || fail "no summary.json after evaluate --overwrite"
+[ ! -e "$work/eval/collisions.csv" ] && [ ! -e "$work/eval/collisions.md" ] ||
+  fail "evaluate --overwrite left the earlier run's collision analysis"
 echo "collision analysis: the head-on collision on step $contact, as simulate reports it"
