@@ -112,19 +112,29 @@ double SingleEnvironment(double seconds, bool random_actions, std::uint64_t seed
   });
 }
 
+// Uniform random actions for `count` worlds, drawn anew by each Draw().
+class RandomActions {
+ public:
+  RandomActions(int count, std::uint64_t seed)
+      : rng_(seed), actions_(static_cast<std::size_t>(count) * kActionSize) {}
+  const float* Draw() {
+    for (float& a : actions_) a = static_cast<float>(Uniform(rng_, -1.0, 1.0));
+    return actions_.data();
+  }
+
+ private:
+  Rng rng_;
+  std::vector<float> actions_;
+};
+
 Case Batched(int num_envs, int num_threads, std::uint64_t seed) {
   auto envs =
       std::make_shared<BatchedEnvironment>(EnvironmentConfig{}, num_envs, num_threads, seed);
   envs->Reset();
-  auto rng = std::make_shared<Rng>(seed);
-  auto actions =
-      std::make_shared<std::vector<float>>(static_cast<std::size_t>(num_envs) * kActionSize);
+  auto actions = std::make_shared<RandomActions>(num_envs, seed);
   Case batched;
   batched.per_call = num_envs;
-  batched.step = [envs, rng, actions] {
-    for (float& a : *actions) a = static_cast<float>(Uniform(*rng, -1.0, 1.0));
-    envs->Step(actions->data());
-  };
+  batched.step = [envs, actions] { envs->Step(actions->Draw()); };
   return batched;
 }
 
@@ -133,15 +143,12 @@ Case Asynchronous(int num_envs, int batch_size, int num_threads, std::uint64_t s
   auto pool = std::make_shared<AsyncEnvironmentPool>(EnvironmentConfig{}, num_envs, batch_size,
                                                      num_threads, seed);
   pool->Reset();
-  auto rng = std::make_shared<Rng>(seed);
-  auto actions =
-      std::make_shared<std::vector<float>>(static_cast<std::size_t>(batch_size) * kActionSize);
+  auto actions = std::make_shared<RandomActions>(batch_size, seed);
   Case asynchronous;
   asynchronous.per_call = batch_size;
-  asynchronous.step = [pool, rng, actions, batch_size] {
+  asynchronous.step = [pool, actions, batch_size] {
     pool->Recv();
-    for (float& a : *actions) a = static_cast<float>(Uniform(*rng, -1.0, 1.0));
-    pool->Send(actions->data(), pool->env_ids(), batch_size);
+    pool->Send(actions->Draw(), pool->env_ids(), batch_size);
   };
   return asynchronous;
 }
