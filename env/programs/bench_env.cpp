@@ -1,6 +1,6 @@
 // bench_env: environment throughput (steps per second), single-threaded and batched (stepped
-// together, and with --async-batch asynchronously, EnvPool style), plus the cost of the hot-path
-// pieces. Ends with the headline lines of shared/spec/interfaces.md.
+// together, and with --async-batch asynchronously, EnvPool style).
+// Ends with the headline lines of shared/spec/interfaces.md.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
@@ -29,14 +29,14 @@ using Clock = std::chrono::steady_clock;
 constexpr int kMaxEnvs = 1024;
 constexpr int kMaxThreads = 256;
 
-// Calls `step` (which performs `per_call` env steps) in blocks of 100 for about `seconds`;
-// returns the steps performed and the time they took.
+// Steps performed and the time they took.
 struct Measured {
   std::int64_t steps = 0;
   double seconds = 0.0;
   double PerSecond() const { return static_cast<double>(steps) / seconds; }
 };
 
+// Calls `step` (which performs `per_call` env steps) in blocks of 100 for about `seconds`.
 Measured Run(double seconds, std::int64_t per_call, const std::function<void()>& step) {
   Measured measured;
   const auto start = Clock::now();
@@ -66,22 +66,26 @@ struct Case {
   std::vector<double> ratios;  ///< of each round's rate to the 1-thread rate of the same round
 };
 
+// Measures one round of `c`, adds it to c's total and returns its rate.
+double MeasureRound(double seconds, Case& c) {
+  const Measured measured = Run(seconds, c.per_call, c.step);
+  c.total.steps += measured.steps;
+  c.total.seconds += measured.seconds;
+  return measured.PerSecond();
+}
+
 // Measures `one_thread` and each of `others` in `rounds` alternating rounds of seconds / rounds
 // each: the speed of this virtual machine drifts by 15 % or more over a few seconds (1-thread
 // runs of the same binary a few seconds apart gave 272,000-355,000 steps/s), and a drift falls on
 // the cases of one round alike.
-void MeasureInRounds(double seconds, int rounds, Case& one_thread, std::vector<Case*> others) {
-  others.insert(others.begin(), &one_thread);
+void MeasureInRounds(double seconds, int rounds, Case& one_thread,
+                     const std::vector<Case*>& others) {
+  WarmUp(one_thread.step);
   for (Case* c : others) WarmUp(c->step);
   for (int round = 0; round < rounds; ++round) {
-    double one_thread_rate = 0.0;
-    for (Case* c : others) {
-      const Measured measured = Run(seconds / rounds, c->per_call, c->step);
-      c->total.steps += measured.steps;
-      c->total.seconds += measured.seconds;
-      if (c == &one_thread) one_thread_rate = measured.PerSecond();
-      c->ratios.push_back(measured.PerSecond() / one_thread_rate);
-    }
+    const double one_thread_rate = MeasureRound(seconds / rounds, one_thread);
+    for (Case* c : others)
+      c->ratios.push_back(MeasureRound(seconds / rounds, *c) / one_thread_rate);
   }
 }
 
@@ -217,9 +221,8 @@ int BenchEnv(int argc, char** argv) {
                               " threads, async batches of " + std::to_string(async_batch),
                           asynchronous, one_thread);
   }
-  const double batched_rate = batched.total.PerSecond();
   std::printf("env_steps_per_s_1thread: %.0f\nenv_steps_per_s_batched: %.0f\n", random,
-              batched_rate);
+              batched.total.PerSecond());
   return 0;
 }
 

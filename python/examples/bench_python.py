@@ -21,24 +21,30 @@ BLOCK = 1000  # loop iterations whose random actions are drawn with one numpy ca
 WARM_UP = 200  # loop iterations before the clock starts
 
 
-def random_actions(rng):
-    """Actions of the next BLOCK loop iterations of `rows` worlds, drawn at once."""
-    def draw(rows):
-        return rng.uniform(-1.0, 1.0, size=(BLOCK, rows, colav.ACTION_SIZE)).astype(np.float32)
-    return draw
+def random_actions(rng, rows):
+    """Uniform random actions: `choose(obs)` for the `rows` worlds of one loop iteration, drawn
+    BLOCK iterations at a time."""
+    queue = []
+
+    def choose(_obs):
+        if not queue:
+            size = (BLOCK, rows, colav.ACTION_SIZE)
+            queue.extend(rng.uniform(-1.0, 1.0, size=size).astype(np.float32))
+        return queue.pop()
+    return choose
 
 
 def policy_actions(path):
-    """A policy's actions: `decide(obs)` for the rows of one loop iteration."""
+    """A policy's actions: `choose(obs)` for the rows of one loop iteration."""
     import torch  # only for --policy: the environment itself needs no torch
 
     torch.set_num_threads(1)
     policy = torch.jit.load(path)
 
-    def decide(obs):
+    def choose(obs):
         with torch.no_grad():
             return policy(torch.from_numpy(obs)).numpy()
-    return decide
+    return choose
 
 
 def steps_per_second(envs, seconds, step, rows):
@@ -55,21 +61,22 @@ def steps_per_second(envs, seconds, step, rows):
 
 def synchronous_loop(envs, choose):
     obs, _ = envs.reset(seed=0)
-    state = {"obs": obs}
 
     def step():
-        state["obs"] = envs.step(choose(state["obs"]))[0]
+        nonlocal obs
+        obs = envs.step(choose(obs))[0]
     return step
 
 
 def asynchronous_loop(envs, choose):
     obs, info = envs.reset(seed=0)
-    state = {"obs": obs, "env_id": info["env_id"]}
+    env_id = info["env_id"]
 
     def step():
-        envs.send(choose(state["obs"]), state["env_id"])
+        nonlocal obs, env_id
+        envs.send(choose(obs), env_id)
         obs, _, _, _, info = envs.recv()
-        state["obs"], state["env_id"] = obs, info["env_id"]
+        env_id = info["env_id"]
     return step
 
 
@@ -92,13 +99,7 @@ def main():
     if args.policy:
         choose, source = policy_actions(args.policy), "policy actions"
     else:
-        draw, queue = random_actions(np.random.default_rng(0)), []
-
-        def choose(obs):
-            if not queue:
-                queue.extend(draw(rows))
-            return queue.pop()
-        source = "random actions"
+        choose, source = random_actions(np.random.default_rng(0), rows), "random actions"
     rate = steps_per_second(envs, args.seconds, make_loop(envs, choose), rows)
     print(f"python loop, {args.envs} worlds ({mode}), {source}: {rate:,.0f} steps/s")
 
