@@ -1,6 +1,8 @@
 """Runs a trained policy (policy.pt, TorchScript) on evaluate's test scenarios, or on scenario
 files, in the batched environment, and prints the metrics evaluate reports (evaluate adds the
-confidence intervals and the paired comparisons between models).
+confidence intervals and the paired comparisons between models), and how often its actions sit at
+a limit of the action box (a policy whose Gaussian grew far wider than the box in training steers
+bang-bang: its mean, the deterministic action, is clipped).
 
     PYTHONPATH=build/python /usr/bin/python3 python/examples/run_policy.py runs/ppo_baseline/policy.pt
     ... run_policy.py POLICY --scenario configs/scenarios/head-on.yaml --scenario ...
@@ -38,10 +40,11 @@ def observation_settings(path, policy):
     return settings
 
 
-def run_episodes(policy, envs):
+def run_episodes(policy, envs, actions_taken=None):
     """Each world's first episode under the policy's deterministic actions; returns the episode
-    metrics per world. Only unfinished episodes go through the policy, at least two rows at a
-    time, as evaluate does, so the numbers are evaluate's to the last bit."""
+    metrics per world and appends each step's actions of the unfinished episodes to
+    `actions_taken` (a list) when given. Only unfinished episodes go through the policy, at least
+    two rows at a time, as evaluate does, so the numbers are evaluate's to the last bit."""
     obs, _ = envs.reset()
     results = [None] * envs.num_envs
     actions = np.zeros((envs.num_envs, colav.ACTION_SIZE), dtype=np.float32)
@@ -50,6 +53,8 @@ def run_episodes(policy, envs):
         rows = active if len(active) > 1 else active * 2
         with torch.no_grad():
             actions[active] = policy(torch.from_numpy(obs[rows])).numpy()[: len(active)]
+        if actions_taken is not None:
+            actions_taken.append(actions[active].copy())
         obs, _, _, _, info = envs.step(actions)
         for i in np.flatnonzero(info.get("_episode_metrics", [])):
             if results[i] is None:
@@ -75,6 +80,23 @@ def summary_lines(results):
     ]
 
 
+# |action| from which an action counts as at the limit of the box [-1, 1].
+AT_LIMIT = 0.99
+
+
+def action_lines(policy, actions_taken):
+    """The share of steps whose surge and rudder actions sit at a limit, and the policy's
+    training standard deviation when the file holds it (train_ppo's `log_std`)."""
+    at_limit = 100.0 * (np.abs(np.concatenate(actions_taken)) >= AT_LIMIT).mean(axis=0)
+    lines = [f"actions at a limit %    surge {at_limit[0]:.1f}, rudder {at_limit[1]:.1f} "
+             f"(|a| >= {AT_LIMIT}, all steps)"]
+    log_std = dict(policy.named_parameters()).get("log_std")
+    if log_std is not None:
+        std = ", ".join(f"{value:.3g}" for value in log_std.detach().exp().tolist())
+        lines.append(f"training std            {std} (surge, rudder)")
+    return lines
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
@@ -89,10 +111,11 @@ def main():
     scenarios = args.scenario or colav.evaluation_scenarios(args.episodes, args.seed)
     settings = observation_settings(args.policy, policy)
     envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
-    results = run_episodes(policy, envs)
+    actions_taken = []
+    results = run_episodes(policy, envs, actions_taken)
     where = "scenario files" if args.scenario else f"test scenarios of master seed {args.seed}"
     print(f"{args.policy} over {len(results)} episodes ({where}; {settings or 'default settings'}):")
-    print("\n".join("  " + line for line in summary_lines(results)))
+    print("\n".join("  " + line for line in summary_lines(results) + action_lines(policy, actions_taken)))
 
 
 if __name__ == "__main__":

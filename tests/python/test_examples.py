@@ -42,6 +42,24 @@ def test_run_policy(tmp_path):
     assert "over 1 episodes (scenario files" in output
 
 
+class ConstantPolicy(torch.nn.Module):
+    """Full surge, half rudder, whatever it sees; a training log_std as train_ppo's files have."""
+
+    def __init__(self):
+        super().__init__()
+        self.log_std = torch.nn.Parameter(torch.log(torch.tensor([2.0, 0.5])))
+
+    def forward(self, obs):
+        return torch.tensor([[1.0, 0.5]]).expand(obs.shape[0], 2)
+
+
+def test_run_policy_reports_actions_at_the_limits_and_the_training_std(tmp_path):
+    torch.jit.script(ConstantPolicy()).save(str(tmp_path / "policy.pt"))
+    output = run_example("run_policy.py", tmp_path / "policy.pt", "--episodes", 2)
+    assert "actions at a limit %    surge 100.0, rudder 0.0" in output
+    assert "training std            2, 0.5 (surge, rudder)" in output
+
+
 class HistoryPolicy(torch.nn.Module):
     """A policy.pt trained with a scan history: it records its observation settings, as
     train_ppo's files do, and only takes observations of their size."""
