@@ -142,7 +142,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
       const std::filesystem::path dir = out / id;
       StudyJob job =
           NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
-                 static_cast<double>(spec.ppo_steps) / kPpoStepsPerSecond);
+                 static_cast<double>(spec.StepsOf(config)) / kPpoStepsPerSecond);
       job.resume_args = {"--resume", dir.string()};
       job.resume_marker = dir / "training_state.pt";
       if (config.extractor != "baseline") {
@@ -155,7 +155,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
                         {"--encoder", encoder.string(), config.locked ? "--locked" : "--unlocked"});
         job.dependencies.push_back(vae_jobs.at(config.vae));
       }
-      job.args.insert(job.args.end(), {"--steps", std::to_string(spec.ppo_steps), "--seed",
+      job.args.insert(job.args.end(), {"--steps", std::to_string(spec.StepsOf(config)), "--seed",
                                        std::to_string(k), "--out", dir.string()});
       AppendOverrides(job.args, spec.ppo_overrides);
       AppendOverrides(job.args, config.overrides);

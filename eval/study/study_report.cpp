@@ -251,12 +251,20 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
                          {"seeds", spec.ppo_seeds},
                          {"ppo_steps", spec.ppo_steps},
                          {"wall_s", wall_s}};
+  std::string own_steps;  // the configurations trained longer or shorter than the study says
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    json["config_steps"][config.name] = spec.StepsOf(config);
+    if (spec.StepsOf(config) != spec.ppo_steps) {
+      own_steps += fmt::format("{}{}: {}", own_steps.empty() ? " (" : ", ", config.name,
+                               spec.StepsOf(config));
+    }
+  }
+  if (!own_steps.empty()) own_steps += ")";
   std::ostringstream md;
   md << "# Study " << spec.name << "\n\n"
      << spec.ppo_configs.size() << " PPO configuration(s) x " << spec.ppo_seeds
-     << " training seed(s) of " << spec.ppo_steps
-     << " steps; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s)
-     << " s.\n";
+     << " training seed(s) of " << spec.ppo_steps << " steps" << own_steps
+     << "; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s) << " s.\n";
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport report =
         SummariseScenarioSet(spec, results, spec.evaluation.compare_to);

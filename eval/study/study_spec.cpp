@@ -14,6 +14,8 @@
 namespace colav {
 namespace {
 
+constexpr std::int64_t kMaxPpoSteps = 1'000'000'000;
+
 // Errors name the file and the key path ("studies/x.yaml: ppo.configs.best.locked: ...").
 class Reader {
  public:
@@ -127,13 +129,14 @@ PpoConfigSpec ReadPpoConfig(const Reader& reader, const YAML::Node& name, const 
   PpoConfigSpec config;
   const std::string key = "ppo.configs." + name.as<std::string>();
   config.name = reader.Name(name, key);
-  reader.RequireMap(node, key, {"extractor", "vae", "locked", "set"});
+  reader.RequireMap(node, key, {"extractor", "vae", "locked", "set", "steps"});
   if (node["extractor"]) {
     config.extractor = reader.Choice(node["extractor"], key + ".extractor",
                                      {"baseline", "vae-shallow", "vae-deep"});
   }
   if (node["locked"]) config.locked = reader.Bool(node["locked"], key + ".locked");
   config.overrides = reader.OverridesOf(node["set"], key + ".set");
+  if (node["steps"]) config.steps = reader.Integer(node["steps"], key + ".steps", 1, kMaxPpoSteps);
   if (config.extractor == "baseline") {
     if (node["vae"]) reader.Fail(key + ".vae", "the baseline extractor uses no VAE");
     return config;
@@ -157,7 +160,7 @@ void ReadPpo(const Reader& reader, const YAML::Node& node, StudySpec& spec) {
     spec.ppo_seeds = static_cast<int>(reader.Integer(node["seeds"], "ppo.seeds", 1, 1000));
   }
   if (node["steps"]) {
-    spec.ppo_steps = reader.Integer(node["steps"], "ppo.steps", 1, 1'000'000'000);
+    spec.ppo_steps = reader.Integer(node["steps"], "ppo.steps", 1, kMaxPpoSteps);
   }
   spec.ppo_overrides = reader.OverridesOf(node["set"], "ppo.set");
   if (!node["configs"] || node["configs"].size() == 0) {

@@ -48,6 +48,8 @@ struct PpoConfigSpec {
   std::string vae;                     ///< name of the VAE whose encoders it uses
   bool locked = true;
   Overrides overrides;  ///< after the study-wide ones
+  /// Environment steps of each run; 0: the study's ppo.steps (longer training, paired with it).
+  std::int64_t steps = 0;
 };
 
 struct EvaluationSpec {
@@ -72,6 +74,11 @@ struct StudySpec {
   /// Also draw the paper's VAE figures (padding comparison, latent densities) on the study's
   /// dataset: eight small VAEs, a few minutes.
   bool vae_figures = false;
+
+  /// The environment steps of `config`'s runs: its own, else the study's.
+  std::int64_t StepsOf(const PpoConfigSpec& config) const {
+    return config.steps > 0 ? config.steps : ppo_steps;
+  }
 };
 
 /// The study of `path`; relative reference-agent paths are taken from the study file's folder.

@@ -22,7 +22,7 @@ ppo:
   steps: 2048
   set: {ppo.n_envs: 2, train.keep_checkpoints: false}
   configs:
-    shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
+    shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true, steps: 3072}
     baseline: {extractor: baseline}
 evaluation: {episodes: 6, seed: 3, paper_episodes: 4}
 YAML
@@ -62,7 +62,13 @@ for name, episodes in (("study", 6), ("paper", 4)):
     poi = sset["probability_of_improvement"]
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
+assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
 PY
+# A configuration's own steps reach its runs and the report.
+grep -q "total_steps: 3072" "$WORK/run/ppo/shallow_locked/seed_1/config.yaml" &&
+  grep -q "total_steps: 2048" "$WORK/run/ppo/baseline/seed_1/config.yaml" || fail "own steps"
+grep -q "training seed(s) of 2048 steps (shallow_locked: 3072);" "$WORK/run/REPORT.md" ||
+  fail "own steps not in the report"
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
   fail "second run failed"

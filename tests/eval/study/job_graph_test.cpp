@@ -19,7 +19,7 @@ StudySpec TinySpec(const TemporaryFolder& folder) {
   spec.ppo_seeds = 3;
   spec.ppo_steps = 4096;
   spec.ppo_configs = {{"locked", "vae-shallow", "shallow", true, {}},
-                      {"log", "vae-shallow", "shallow", false, {"env.closeness=log"}},
+                      {"log", "vae-shallow", "shallow", false, {"env.closeness=log"}, 8192},
                       {"baseline", "baseline", "", true, {}}};
   spec.evaluation.episodes = 20;
   spec.evaluation.paper_episodes = 5;
@@ -60,6 +60,7 @@ TEST(JobGraphTest, JobsDependenciesAndArguments) {
   EXPECT_TRUE(Find(jobs, "ppo/baseline/seed_0").dependencies.empty());
   EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--unlocked"}));
   EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--set", "env.closeness=log"}));
+  EXPECT_TRUE(Has(Find(jobs, "ppo/log/seed_0").args, {"--steps", "8192"}));  // its own
   const StudyJob& figure = Find(jobs, "figures/training/locked");
   EXPECT_EQ(figure.program, "plot_training");
   EXPECT_EQ(figure.dependencies.size(), 3U);

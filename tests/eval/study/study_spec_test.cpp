@@ -29,7 +29,7 @@ ppo:
   set: {ppo.n_envs: 2}
   configs:
     shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
-    shallow_log: {extractor: vae-shallow, vae: shallow, set: {env.closeness: log}}
+    shallow_log: {extractor: vae-shallow, vae: shallow, set: {env.closeness: log}, steps: 8192}
     baseline: {extractor: baseline}
 evaluation: {episodes: 20, seed: 4, paper_episodes: 0}
 )";
@@ -48,6 +48,8 @@ TEST(StudySpecTest, ReadsEverySection) {
   EXPECT_EQ(spec.ppo_configs[0].name, "shallow_locked");  // file order
   EXPECT_EQ(spec.ppo_configs[1].overrides, Overrides{"env.closeness=log"});
   EXPECT_EQ(spec.ppo_configs[2].extractor, "baseline");
+  EXPECT_EQ(spec.StepsOf(spec.ppo_configs[0]), 4096);  // the study's
+  EXPECT_EQ(spec.StepsOf(spec.ppo_configs[1]), 8192);  // its own
   EXPECT_EQ(spec.evaluation.episodes, 20);
   EXPECT_EQ(spec.evaluation.seed, 4U);
   EXPECT_EQ(spec.evaluation.paper_episodes, 0);
@@ -106,6 +108,7 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
        "ppo.configs.a.vae"},
       {"ppo: {seeds: 0, configs: {a: {}}}", "ppo.seeds"},
       {"ppo: {steps: 1.5, configs: {a: {}}}", "ppo.steps"},
+      {"ppo: {configs: {a: {steps: 0}}}", "ppo.configs.a.steps"},
       {"ppo: {configs: {a: {locked: maybe}}}", "ppo.configs.a.locked"},
       {"ppo: {configs: {a: {}}}\nevaluation: {episodes: nan}", "evaluation.episodes"},
       {"ppo: {configs: {a: {}}}\nevaluation: {reference_agents: [missing.pt]}",
