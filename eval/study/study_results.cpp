@@ -12,6 +12,8 @@ const std::vector<StudyMetric>& StudyMetrics() {
       {"duration", "steps", "duration", 1.0, false, false},
       {"collision", "collision", "collisions %", 100.0, false, true},
       {"goal", "goal", "goal %", 100.0, true, true},
+      // episodes that ran out of steps without a collision or the goal: evaluate's `truncated`
+      {"time_out", "truncated", "time-outs %", 100.0, false, true},
   };
   return kMetrics;
 }

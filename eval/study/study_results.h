@@ -22,7 +22,7 @@ struct StudyMetric {
   bool is_rate;  ///< 0/1 per episode: Wilson intervals
 };
 
-/// progress, cross_track_error, duration, collision, goal.
+/// progress, cross_track_error, duration, collision, goal, time_out.
 const std::vector<StudyMetric>& StudyMetrics();
 
 /// values[metric name][scenario] of one model.

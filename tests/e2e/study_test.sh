@@ -59,6 +59,7 @@ for name, episodes in (("study", 6), ("paper", 4)):
         c = m["metrics"]["collision"]
         assert 0 <= c["low"] <= c["mean"] <= c["high"] <= 100
         assert c["interval"] == "bootstrap over seeds"
+        assert 0 <= m["metrics"]["time_out"]["mean"] <= 100
     poi = sset["probability_of_improvement"]
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1

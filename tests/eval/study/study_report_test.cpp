@@ -5,15 +5,21 @@
 namespace colav {
 namespace {
 
-// One model's episodes: every metric's value per scenario (progress and rates in %).
+// One model's episodes: every metric's value per scenario (progress and rates in %); an episode
+// with less than 90 % progress and no collision timed out.
 ModelEpisodes Episodes(std::vector<double> progress, std::vector<double> cte,
                        std::vector<double> collision) {
   const std::vector<double> constant(progress.size(), 500.0);
+  std::vector<double> time_out(progress.size(), 0.0);
+  for (std::size_t i = 0; i < progress.size(); ++i) {
+    time_out[i] = progress[i] < 90.0 && collision[i] == 0.0 ? 100.0 : 0.0;
+  }
   return {{"progress", progress},
           {"cross_track_error", cte},
           {"duration", constant},
           {"collision", collision},
-          {"goal", std::vector<double>(progress.size(), 0.0)}};
+          {"goal", std::vector<double>(progress.size(), 0.0)},
+          {"time_out", time_out}};
 }
 
 TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
@@ -41,6 +47,9 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_GE(progress.ci.low, 90.0);
   EXPECT_LE(progress.ci.high, 100.0);
   EXPECT_DOUBLE_EQ(better.metrics.at("collision").mean, 12.5);
+  EXPECT_DOUBLE_EQ(better.metrics.at("time_out").mean, 0.0);
+  // baseline: seed 0 times out in 3 of 4 scenarios, seed 1 in 2.
+  EXPECT_DOUBLE_EQ(report.models[1].metrics.at("time_out").mean, 62.5);
   // Unbounded: Student-t over the seed means 10 and 20 (sd 7.07, t(0.975, 1) = 12.706).
   const MetricEstimate& cte = better.metrics.at("cross_track_error");
   EXPECT_EQ(cte.method, "t over seeds");
