@@ -115,7 +115,8 @@ def main():
     results = run_episodes(policy, envs, actions_taken)
     where = "scenario files" if args.scenario else f"test scenarios of master seed {args.seed}"
     print(f"{args.policy} over {len(results)} episodes ({where}; {settings or 'default settings'}):")
-    print("\n".join("  " + line for line in summary_lines(results) + action_lines(policy, actions_taken)))
+    lines = summary_lines(results) + action_lines(policy, actions_taken)
+    print("\n".join("  " + line for line in lines))
 
 
 if __name__ == "__main__":
