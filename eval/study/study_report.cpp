@@ -5,6 +5,8 @@
 
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "eval/study/study_figures.h"
 #include "src/atomic_file.h"
@@ -251,19 +253,17 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
                          {"seeds", spec.ppo_seeds},
                          {"ppo_steps", spec.ppo_steps},
                          {"wall_s", wall_s}};
-  std::string own_steps;  // the configurations trained longer or shorter than the study says
+  std::vector<std::string> own_steps;  // configurations trained longer or shorter than the study
   for (const PpoConfigSpec& config : spec.ppo_configs) {
-    json["config_steps"][config.name] = spec.StepsOf(config);
-    if (spec.StepsOf(config) != spec.ppo_steps) {
-      own_steps += fmt::format("{}{}: {}", own_steps.empty() ? " (" : ", ", config.name,
-                               spec.StepsOf(config));
-    }
+    const std::int64_t steps = spec.StepsOf(config);
+    json["config_steps"][config.name] = steps;
+    if (steps != spec.ppo_steps) own_steps.push_back(fmt::format("{}: {}", config.name, steps));
   }
-  if (!own_steps.empty()) own_steps += ")";
   std::ostringstream md;
   md << "# Study " << spec.name << "\n\n"
      << spec.ppo_configs.size() << " PPO configuration(s) x " << spec.ppo_seeds
-     << " training seed(s) of " << spec.ppo_steps << " steps" << own_steps
+     << " training seed(s) of " << spec.ppo_steps << " steps"
+     << (own_steps.empty() ? "" : fmt::format(" ({})", fmt::join(own_steps, ", ")))
      << "; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s) << " s.\n";
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport report =
