@@ -1,5 +1,6 @@
 // bench_env: environment throughput (steps per second), single-threaded and batched (stepped
-// together, and with --async-batch asynchronously, EnvPool style).
+// together, and with --async-batch asynchronously, EnvPool style), against the ceiling of the
+// batched case: the same worlds stepped by independent threads.
 // Ends with the headline lines of shared/spec/interfaces.md.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -7,7 +8,9 @@
 #include <cstdio>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "env/async_environment.h"
@@ -28,6 +31,8 @@ using Clock = std::chrono::steady_clock;
 // As many worlds and threads as train_ppo's ppo.n_envs and a machine can use.
 constexpr int kMaxEnvs = 1024;
 constexpr int kMaxThreads = 256;
+// Stepping before a case is measured, so that its worlds' memory is warm.
+constexpr double kWarmUpSeconds = 0.01;
 
 // Steps performed and the time they took.
 struct Measured {
@@ -60,15 +65,14 @@ double Throughput(double seconds, std::int64_t per_call, const std::function<voi
 
 // A case measured against the 1-thread case in alternating rounds.
 struct Case {
-  std::int64_t per_call = 0;
-  std::function<void()> step;
+  std::function<Measured(double seconds)> measure;  ///< steps for about `seconds`
   Measured total;
   std::vector<double> ratios;  ///< of each round's rate to the 1-thread rate of the same round
 };
 
 // Measures one round of `c`, adds it to c's total and returns its rate.
 double MeasureRound(double seconds, Case& c) {
-  const Measured measured = Run(seconds, c.per_call, c.step);
+  const Measured measured = c.measure(seconds);
   c.total.steps += measured.steps;
   c.total.seconds += measured.seconds;
   return measured.PerSecond();
@@ -80,8 +84,8 @@ double MeasureRound(double seconds, Case& c) {
 // the cases of one round alike.
 void MeasureInRounds(double seconds, int rounds, Case& one_thread,
                      const std::vector<Case*>& others) {
-  WarmUp(one_thread.step);
-  for (Case* c : others) WarmUp(c->step);
+  one_thread.measure(kWarmUpSeconds);
+  for (Case* c : others) c->measure(kWarmUpSeconds);
   for (int round = 0; round < rounds; ++round) {
     const double one_thread_rate = MeasureRound(seconds / rounds, one_thread);
     for (Case* c : others)
@@ -137,9 +141,50 @@ Case Batched(int num_envs, int num_threads, std::uint64_t seed) {
   envs->Reset();
   auto actions = std::make_shared<RandomActions>(num_envs, seed);
   Case batched;
-  batched.per_call = num_envs;
-  batched.step = [envs, actions] { envs->Step(actions->Draw()); };
+  batched.measure = [envs, actions, num_envs](double seconds) {
+    return Run(seconds, num_envs, [&] { envs->Step(actions->Draw()); });
+  };
   return batched;
+}
+
+// The ceiling of the batched case on this machine: the worlds split into one group per thread,
+// each group stepped by its own thread on its own, with no hand-over between the threads.
+Case Independent(int num_envs, int threads_wanted, std::uint64_t seed) {
+  const int num_threads = std::min(threads_wanted, num_envs);  // as BatchedEnvironment's pool
+  struct Group {
+    std::unique_ptr<BatchedEnvironment> envs;
+    std::unique_ptr<RandomActions> actions;
+  };
+  auto groups = std::make_shared<std::vector<Group>>();
+  for (int k = 0; k < num_threads; ++k) {
+    const int worlds = ThreadPool::ShareStart(num_envs, num_threads, k + 1) -
+                       ThreadPool::ShareStart(num_envs, num_threads, k);
+    const std::uint64_t group_seed = DeriveSeed(seed, "bench-group", k);
+    groups->push_back(
+        {std::make_unique<BatchedEnvironment>(EnvironmentConfig{}, worlds, 1, group_seed),
+         std::make_unique<RandomActions>(worlds, group_seed)});
+    groups->back().envs->Reset();
+  }
+  Case independent;
+  independent.measure = [groups](double seconds) {
+    std::vector<Measured> measured(groups->size());
+    std::vector<std::thread> threads;
+    for (std::size_t k = 0; k < groups->size(); ++k) {
+      threads.emplace_back([&, k] {
+        Group& group = (*groups)[k];
+        measured[k] =
+            Run(seconds, group.envs->num_envs(), [&] { group.envs->Step(group.actions->Draw()); });
+      });
+    }
+    for (std::thread& thread : threads) thread.join();
+    Measured all;
+    for (const Measured& m : measured) {
+      all.steps += m.steps;
+      all.seconds = std::max(all.seconds, m.seconds);
+    }
+    return all;
+  };
+  return independent;
 }
 
 // Recv a batch, draw its actions, Send them: the loop of an EnvPool-style trainer.
@@ -149,10 +194,11 @@ Case Asynchronous(int num_envs, int batch_size, int num_threads, std::uint64_t s
   pool->Reset();
   auto actions = std::make_shared<RandomActions>(batch_size, seed);
   Case asynchronous;
-  asynchronous.per_call = batch_size;
-  asynchronous.step = [pool, actions, batch_size] {
-    pool->Recv();
-    pool->Send(actions->Draw(), pool->env_ids(), batch_size);
+  asynchronous.measure = [pool, actions, batch_size](double seconds) {
+    return Run(seconds, batch_size, [&] {
+      pool->Recv();
+      pool->Send(actions->Draw(), pool->env_ids(), batch_size);
+    });
   };
   return asynchronous;
 }
@@ -203,7 +249,8 @@ int BenchEnv(int argc, char** argv) {
   std::printf("1 thread, random actions              %12.0f steps/s\n", random);
   Case one_thread = Batched(num_envs, 1, seed);
   Case batched = Batched(num_envs, num_threads, seed);
-  std::vector<Case*> against_one_thread = {&batched};
+  Case independent = Independent(num_envs, num_threads, seed);
+  std::vector<Case*> against_one_thread = {&batched, &independent};
   Case asynchronous;
   if (async_batch > 0) {
     asynchronous = Asynchronous(num_envs, async_batch, num_threads, seed);
@@ -216,6 +263,9 @@ int BenchEnv(int argc, char** argv) {
   PrintAgainstOneThread(std::to_string(num_envs) + " worlds on " + std::to_string(num_threads) +
                             " threads, random actions",
                         batched, one_thread);
+  PrintAgainstOneThread(std::to_string(num_envs) + " worlds in " + std::to_string(num_threads) +
+                            " independent threads (ceiling)",
+                        independent, one_thread);
   if (async_batch > 0) {
     PrintAgainstOneThread(std::to_string(num_envs) + " worlds on " + std::to_string(num_threads) +
                               " threads, async batches of " + std::to_string(async_batch),
