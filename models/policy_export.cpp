@@ -2,6 +2,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "env/environment_spec.h"
 #include "models/observation_settings_record.h"
@@ -10,7 +11,7 @@
 namespace colav {
 namespace {
 
-std::string FeaturesSource(FeatureExtractorImpl& extractor) {
+std::string FeaturesSource(FeatureExtractorImpl& extractor, bool normalized_navigation) {
   const std::int64_t scans = extractor.options().scans;
   std::string closeness = "obs[:, " + std::to_string(kNavigationSize) + ":" +
                           std::to_string(extractor.observation_size()) + "]";
@@ -46,7 +47,12 @@ std::string FeaturesSource(FeatureExtractorImpl& extractor) {
     }
     if (layer.relu) source << "    h = torch.relu(h)\n";
   }
-  source << "    return torch.cat([obs[:, 0:" << kNavigationSize << "], " << encodings << "], 1)\n";
+  const std::string navigation = "obs[:, 0:" + std::to_string(kNavigationSize) + "]";
+  source << "    return torch.cat(["
+         << (normalized_navigation
+                 ? "(" + navigation + " - self.navigation_mean) / self.navigation_spread"
+                 : navigation)
+         << ", " << encodings << "], 1)\n";
   return source.str();
 }
 
@@ -62,12 +68,22 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
   return source.str();
 }
 
+// A float32 tensor [kNavigationSize] of `values`.
+torch::Tensor NavigationTensor(const std::array<float, kNavigationSize>& values) {
+  return torch::tensor(std::vector<float>(values.begin(), values.end()), torch::kFloat32);
+}
+
 }  // namespace
 
 torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                                const ObservationSettings& settings) {
+                                const ObservationSettings& settings,
+                                const std::optional<NavigationNormalization>& navigation) {
   torch::jit::Module script("__torch__.colav.PpoPolicy");
   RegisterParameters(model, script);
+  if (navigation) {
+    script.register_buffer("navigation_mean", NavigationTensor(navigation->mean));
+    script.register_buffer("navigation_spread", NavigationTensor(navigation->spread));
+  }
   const FeatureExtractorOptions& extractor = model.options().extractor;
   script.register_attribute("extractor", c10::StringType::get(), ExtractorKindName(extractor.kind));
   script.register_attribute("locked", c10::BoolType::get(),
@@ -77,7 +93,7 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
   script.register_attribute("observation_layout", c10::StringType::get(),
                             ObservationLayoutText(settings));
   RecordObservationSettings(script, settings);
-  script.define(FeaturesSource(*model.features_extractor()) +
+  script.define(FeaturesSource(*model.features_extractor(), navigation.has_value()) +
                 "def forward(self, obs: Tensor) -> Tensor:\n"
                 "    f = self.features(obs)\n" +
                 TrunkSource(model.mlp_extractor()->policy_net, "mlp_extractor.policy_net") +
@@ -90,8 +106,9 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
 }
 
 void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                  const ObservationSettings& settings, const std::filesystem::path& path) {
-  SaveScript(ScriptPolicy(model, global_step, settings), path);
+                  const ObservationSettings& settings, const std::filesystem::path& path,
+                  const std::optional<NavigationNormalization>& navigation) {
+  SaveScript(ScriptPolicy(model, global_step, settings, navigation), path);
 }
 
 }  // namespace colav

@@ -10,6 +10,9 @@
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead
 //   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees), then the
 //   earlier scans' 180 values each, newest first, when scans > 1.
+//   A policy trained with navigation normalisation (ppo.normalize_navigation) holds buffers
+//   navigation_mean and navigation_spread [6] and its features(obs) start with
+//   (obs[:, 0:6] - navigation_mean) / navigation_spread: forward and value take raw observations.
 //   Attributes: extractor (str), locked (bool), scans (int, range scans per observation),
 //   global_step (int), observation_layout (str, the line above for the closeness transform trained
 //   with), observation_settings (str, the settings trained with,
@@ -20,21 +23,34 @@
 #include <torch/script.h>
 #include <torch/torch.h>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
+#include "env/environment_spec.h"
 #include "env/observation_settings.h"
 #include "models/actor_critic.h"
 
 namespace colav {
 
+/// The map a policy trained with navigation normalisation applies to the 6 navigation values
+/// before anything else: (x - mean) / spread, in float (train/ppo/navigation_normalizer.h).
+struct NavigationNormalization {
+  std::array<float, kNavigationSize> mean{};
+  std::array<float, kNavigationSize> spread{};
+};
+
 /// The scripted policy in memory (parameters are detached copies), recording the observation
-/// `settings` it was trained with.
+/// `settings` it was trained with; with `navigation`, a model trained on normalised navigation
+/// values becomes a policy of raw observations.
 torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                                const ObservationSettings& settings);
+                                const ObservationSettings& settings,
+                                const std::optional<NavigationNormalization>& navigation = {});
 
 /// Writes ScriptPolicy(...) to `path` atomically; an unwritable path is a UserError naming it.
 void ExportPolicy(ActorCriticImpl& model, std::int64_t global_step,
-                  const ObservationSettings& settings, const std::filesystem::path& path);
+                  const ObservationSettings& settings, const std::filesystem::path& path,
+                  const std::optional<NavigationNormalization>& navigation = {});
 
 }  // namespace colav

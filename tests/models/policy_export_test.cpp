@@ -78,6 +78,41 @@ TEST(PolicyExportTest, PoliciesOfThreeScansEqualTheInProcessPolicy) {
 
 // Either way round: a policy of 3 scans given one scan, and one of 1 scan given three (which it
 // could otherwise read the first of, silently).
+// A model trained on normalised navigation values, exported with their normalisation, is a policy
+// of raw observations: the same outputs, to the bit, as the model given the normalised values.
+TEST(PolicyExportTest, APolicyWithNavigationNormalisationTakesRawObservations) {
+  testing_util::TemporaryFolder directory;
+  ActorCritic model(ActorCriticOptions{});
+  NavigationNormalization navigation;
+  navigation.mean = {0.5f, -0.01f, 0.002f, 0.1f, -0.3f, 2.0f};
+  navigation.spread = {0.05f, 0.06f, 0.04f, 0.25f, 0.7f, 1.5f};
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 7, ObservationSettings{}, path, navigation);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::NoGradGuard no_grad;
+  const torch::Tensor raw = torch::rand({5, kObservationSize});
+  torch::Tensor normalised = raw.clone();
+  for (std::int64_t row = 0; row < raw.size(0); ++row) {
+    for (int j = 0; j < kNavigationSize; ++j) {  // by hand, in float
+      normalised[row][j] = (raw[row][j].item<float>() - navigation.mean[j]) / navigation.spread[j];
+    }
+  }
+  const auto [mean, value] = model->forward(normalised);
+  EXPECT_TRUE(torch::equal(loaded.get_method("features")({raw}).toTensor(),
+                           model->features_extractor()->forward(normalised)));
+  EXPECT_TRUE(torch::allclose(loaded.forward({raw}).toTensor(), mean.clamp(-1.0, 1.0), 1e-6, 1e-7));
+  EXPECT_TRUE(torch::allclose(loaded.get_method("value")({raw}).toTensor(), value, 1e-6, 1e-6));
+  EXPECT_TRUE(torch::equal(
+      loaded.attr("navigation_spread").toTensor(),
+      torch::tensor(std::vector<float>(navigation.spread.begin(), navigation.spread.end()))));
+  // Without a normalisation the raw values go through, as before.
+  ExportPolicy(*model, 7, ObservationSettings{}, directory.path() / "plain.pt");
+  torch::jit::Module plain = torch::jit::load((directory.path() / "plain.pt").string());
+  EXPECT_FALSE(plain.hasattr("navigation_mean"));
+  EXPECT_TRUE(torch::equal(plain.get_method("features")({raw}).toTensor().narrow(1, 0, 6),
+                           raw.narrow(1, 0, 6)));
+}
+
 TEST(PolicyExportTest, APolicyRejectsObservationsOfAnotherWidth) {
   testing_util::TemporaryFolder directory;
   for (const auto& [scans, given_scans] : {std::pair{3, 1}, std::pair{1, 3}}) {

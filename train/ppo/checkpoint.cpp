@@ -1,6 +1,8 @@
 #include "train/ppo/checkpoint.h"
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "models/policy_export.h"
 #include "src/atomic_file.h"
@@ -41,6 +43,32 @@ void WriteRolloutStart(torch::serialize::OutputArchive& archive, const RolloutSt
                 torch::tensor({variance.mean, variance.variance, variance.count}, torch::kFloat64));
   archive.write(prefix + "reward_scaling_returns",
                 torch::tensor(start.reward_scaling.returns, torch::kFloat64));
+  std::vector<double> navigation;  // [kNavigationSize, 3]: mean, variance, count of each value
+  for (const RunningVariance& moments : start.navigation_moments) {
+    navigation.insert(navigation.end(), {moments.mean, moments.variance, moments.count});
+  }
+  archive.write(prefix + "navigation_moments",
+                torch::tensor(navigation, torch::kFloat64).reshape({kNavigationSize, 3}));
+}
+
+// Absent from state files written before navigation normalisation existed: then the initial
+// moments, which such a run never used.
+NavigationNormalizer::Moments ReadNavigationMoments(torch::serialize::InputArchive& archive) {
+  NavigationNormalizer::Moments moments;
+  torch::Tensor stored;
+  if (!archive.try_read(std::string(kRolloutStartPrefix) + "navigation_moments", stored)) {
+    return moments;
+  }
+  stored = stored.to(torch::kFloat64).contiguous();
+  if (stored.numel() != kNavigationSize * 3) {
+    throw UserError("navigation moments: " + std::to_string(kNavigationSize * 3) +
+                    " values expected");
+  }
+  const double* values = stored.data_ptr<double>();
+  for (int j = 0; j < kNavigationSize; ++j) {
+    moments[j] = {values[3 * j], values[3 * j + 1], values[3 * j + 2]};
+  }
+  return moments;
 }
 
 // Absent from state files written before reward scaling existed: then it stays empty.
@@ -83,8 +111,12 @@ RolloutStart ReadRolloutStart(torch::serialize::InputArchive& archive,
          {actions.data_ptr<double>(), actions.data_ptr<double>() + actions.numel()}});
   }
   start.reward_scaling = ReadRewardScaling(archive);
+  start.navigation_moments = ReadNavigationMoments(archive);
+  const bool navigation_consistent =
+      std::all_of(start.navigation_moments.begin(), start.navigation_moments.end(),
+                  [](const RunningVariance& m) { return m.variance >= 0.0 && m.count > 0.0; });
   const bool consistent =
-      start.reward_scaling.return_variance.variance >= 0.0 &&
+      navigation_consistent && start.reward_scaling.return_variance.variance >= 0.0 &&
       start.reward_scaling.return_variance.count > 0.0 && start.counters.global_step >= 0 &&
       start.counters.global_step <= counters.global_step && start.counters.episodes >= 0 &&
       start.counters.episodes <= counters.episodes && (episodes >= 0).all().item<bool>();
@@ -101,12 +133,15 @@ std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir) {
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
                     const TrainingCounters& counters, const RolloutStart& rollout_start,
-                    const ObservationSettings& settings, bool keep_policy_copy) {
-  ExportPolicy(model, counters.global_step, settings, run_dir / "policy.pt");
+                    const ObservationSettings& settings,
+                    const std::optional<NavigationNormalization>& navigation,
+                    bool keep_policy_copy) {
+  ExportPolicy(model, counters.global_step, settings, run_dir / "policy.pt", navigation);
   if (keep_policy_copy) {
     ExportPolicy(
         model, counters.global_step, settings,
-        run_dir / "checkpoints" / ("policy_" + std::to_string(counters.global_step) + ".pt"));
+        run_dir / "checkpoints" / ("policy_" + std::to_string(counters.global_step) + ".pt"),
+        navigation);
   }
   torch::serialize::OutputArchive archive;
   for (const auto& parameter : model.named_parameters()) {

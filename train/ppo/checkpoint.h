@@ -6,19 +6,21 @@
 // A checkpoint can fall inside a rollout (every checkpoint_interval steps, or on SIGKILL the last
 // one). The weights and the Adam state do not change within a rollout, so the state file also
 // records the start of the rollout in progress (RolloutStart: counters, sampling generator, the
-// worlds' histories, the reward scaler); a resumed run replays that rollout and so ends bit for bit
-// where an uninterrupted run does.
+// worlds' histories, the reward scaler, the navigation moments); a resumed run replays that rollout
+// and so ends bit for bit where an uninterrupted run does.
 #pragma once
 
 #include <torch/torch.h>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 
 #include "env/batched_environment.h"
 #include "env/observation_settings.h"
 #include "models/actor_critic.h"
 #include "models/adam.h"
+#include "train/ppo/navigation_normalizer.h"
 #include "train/ppo/reward_scaling.h"
 
 namespace colav {
@@ -40,16 +42,21 @@ struct RolloutStart {
   /// The reward scaler's (empty returns in a state file from before reward scaling, which was
   /// then always off).
   RewardScalingState reward_scaling;
+  /// The navigation normaliser's (the initial moments in a state file from before it existed).
+  NavigationNormalizer::Moments navigation_moments;
 };
 
 /// Path of the training state in a run folder.
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir);
 
-/// `settings` are the observation settings the policy is trained with (recorded in policy.pt).
+/// `settings` are the observation settings the policy is trained with (recorded in policy.pt),
+/// `navigation` the normalisation of its navigation values now, if any (exported with it).
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
                     const TrainingCounters& counters, const RolloutStart& rollout_start,
-                    const ObservationSettings& settings, bool keep_policy_copy);
+                    const ObservationSettings& settings,
+                    const std::optional<NavigationNormalization>& navigation,
+                    bool keep_policy_copy);
 
 /// Restores the weights and optimiser in place and returns where the run resumes. A missing,
 /// truncated or inconsistent state file, or one that does not fit `model`, is a UserError naming

@@ -171,6 +171,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "ppo.normalize_reward", [](Run & o) -> auto& { return o.ppo.normalize_reward; },
           "scale the rewards the learner sees by the running std of the discounted return, "
           "clipped to +-10 (SB3's VecNormalize norm_reward; logs keep the environment's rewards)")
+      .Bool(
+          "ppo.normalize_navigation", [](Run & o) -> auto& { return o.ppo.normalize_navigation; },
+          "normalise the 6 navigation values the policy sees by their running mean and std (SB3's "
+          "VecNormalize norm_obs on the navigation values only, not clipped; policy.pt applies it)")
       .Number(
           "ppo.max_grad_norm", [](Run & o) -> auto& { return o.ppo.max_grad_norm; },
           "global gradient-norm clip", 0.0, 1e6)

@@ -29,6 +29,10 @@ struct PpoOptions {
   /// Scale the rewards the learner sees by the running spread of the discounted return
   /// (reward_scaling.h; SB3's VecNormalize norm_reward). Off in the paper's recipe.
   bool normalize_reward = false;
+  /// Normalise the navigation values the policy sees by their running mean and spread
+  /// (navigation_normalizer.h; SB3's VecNormalize norm_obs, without clipping, on the navigation
+  /// values only). The exported policy applies the same map. Off in the paper's recipe.
+  bool normalize_navigation = false;
   PpoLossOptions loss;
   AdamOptions adam;
   /// How adam.learning_rate moves over the run.

@@ -13,17 +13,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "train/ppo/running_variance.h"
+
 namespace colav {
-
-/// A running mean and (population) variance, merged batch by batch with Chan et al.'s parallel
-/// formula, as SB3's RunningMeanStd; it starts as mean 0, variance 1 with a weight of 1e-4.
-struct RunningVariance {
-  double mean = 0.0;
-  double variance = 1.0;
-  double count = 1e-4;
-
-  void Update(const std::vector<double>& batch);
-};
 
 /// What a checkpoint records of the scaler (the rollout start's, checkpoint.h).
 struct RewardScalingState {

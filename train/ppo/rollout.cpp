@@ -21,11 +21,38 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, 
       rules_(rules),
       env_(config, n_envs, threads, env_seed),
       reward_scaler_(n_envs, rules.gamma),
+      observations_(static_cast<std::size_t>(n_envs) * env_.observation_size()),
+      final_observation_(env_.observation_size()),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
       clipped_actions_(mean_.size()),
       scratch_values_(n_envs),
       scratch_means_(kActionSize) {
   env_.Reset();
+  SeeObservations(true);
+}
+
+void RolloutCollector::SeeObservations(bool new_observations) {
+  std::copy_n(env_.observations(), observations_.size(), observations_.data());
+  if (!rules_.normalize_navigation) return;
+  const int N = env_.num_envs();
+  if (new_observations)
+    navigation_normalizer_.Update(observations_.data(), N, env_.observation_size());
+  navigation_normalizer_.Normalize(observations_.data(), N, env_.observation_size());
+}
+
+void RolloutCollector::RestoreWorlds(const std::vector<WorldHistory>& histories) {
+  env_.Restore(histories);
+  SeeObservations(false);
+}
+
+void RolloutCollector::RestoreNavigationMoments(const NavigationNormalizer::Moments& moments) {
+  navigation_normalizer_.Restore(moments);
+  SeeObservations(false);
+}
+
+std::optional<NavigationNormalization> RolloutCollector::navigation_normalization() const {
+  if (!rules_.normalize_navigation) return std::nullopt;
+  return navigation_normalizer_.Normalization();
 }
 
 bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noise,
@@ -41,7 +68,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   const float* epsilon = noise.data_ptr<float>();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
-    std::copy_n(env_.observations(), N * env_.observation_size(), observations);
+    std::copy(observations_.begin(), observations_.end(), observations);
     policy.Predict(observations, N, mean_.data(), buffer.values(t));
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
@@ -60,6 +87,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     env_.Step(clipped_actions_.data());
     env_seconds_ +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+    SeeObservations(true);
 
     finished_.clear();
     for (int e = 0; e < N; ++e) {
@@ -80,7 +108,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     ValueFinalObservations(policy, t, buffer);
     if (!after_step(finished_)) return false;
   }
-  policy.Predict(env_.observations(), N, mean_.data(), buffer.last_values());
+  policy.Predict(observations_.data(), N, mean_.data(), buffer.last_values());
   return true;
 }
 
@@ -91,9 +119,13 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
     buffer.final_values(t)[e] = 0.0f;
     if (buffer.bootstrapped(t)[e] == 0) continue;
     // Rare (one step in 2000 per world): value the one row on its own.
-    policy.Predict(
-        env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(), 1,
-        scratch_means_.data(), scratch_values_.data());
+    std::copy_n(
+        env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(),
+        env_.observation_size(), final_observation_.data());
+    if (rules_.normalize_navigation) {
+      navigation_normalizer_.Normalize(final_observation_.data(), 1, env_.observation_size());
+    }
+    policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data());
     buffer.final_values(t)[e] = scratch_values_[0];
   }
 }

@@ -1,8 +1,9 @@
 // Collects PPO rollouts from the batched environment (SB3 collect_rollouts, reference-learning
 // 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] for the environment
 // only (the buffer keeps the unclipped sample and its log-probability), a truncated episode's
-// final observation is valued for bootstrapping (BootstrapsFromFinalObservation), and the rewards
-// are optionally scaled (reward_scaling.h).
+// final observation is valued for bootstrapping (BootstrapsFromFinalObservation), and optionally
+// the rewards are scaled (reward_scaling.h) and the navigation values the policy sees normalised
+// (navigation_normalizer.h).
 #pragma once
 
 #include <torch/torch.h>
@@ -15,6 +16,7 @@
 
 #include "env/batched_environment.h"
 #include "models/actor_critic_fast.h"
+#include "train/ppo/navigation_normalizer.h"
 #include "train/ppo/reward_scaling.h"
 #include "train/ppo/rollout_buffer.h"
 
@@ -41,6 +43,10 @@ struct RolloutRules {
   /// `gamma`; otherwise the buffer holds the environment's rewards.
   bool scale_rewards = false;
   double gamma = 0.0;
+  /// Normalise the navigation values of the observations the policy sees and the buffer keeps
+  /// (navigation_normalizer.h); the running moments take in each step's new observations, as
+  /// SB3's VecNormalize does (not a final observation, which is only normalised).
+  bool normalize_navigation = false;
 };
 
 class RolloutCollector {
@@ -62,22 +68,35 @@ class RolloutCollector {
   /// What each world has played since its episode started (a checkpoint's record of the worlds).
   const std::vector<WorldHistory>& world_histories() const { return env_.histories(); }
   /// Puts the worlds back where world_histories() left them (BatchedEnvironment::Restore).
-  void RestoreWorlds(const std::vector<WorldHistory>& histories) { env_.Restore(histories); }
+  void RestoreWorlds(const std::vector<WorldHistory>& histories);
   /// The reward scaler's state (a checkpoint's record; unused when rewards are not scaled).
   const RewardScalingState& reward_scaling() const { return reward_scaler_.state(); }
   /// Throws std::invalid_argument if it was recorded for another number of worlds.
   void RestoreRewardScaling(const RewardScalingState& state) { reward_scaler_.Restore(state); }
+  /// The running moments of the navigation values (a checkpoint's record; unused when off).
+  const NavigationNormalizer::Moments& navigation_moments() const {
+    return navigation_normalizer_.moments();
+  }
+  void RestoreNavigationMoments(const NavigationNormalizer::Moments& moments);
+  /// What the policy applies to raw navigation values now; none when they are not normalised.
+  std::optional<NavigationNormalization> navigation_normalization() const;
 
   /// Wall time spent stepping the worlds so far (s).
   double env_seconds() const { return env_seconds_; }
 
  private:
   void ValueFinalObservations(FastActorCritic& policy, int t, RolloutBuffer& buffer);
+  /// Makes the policy's view of the worlds' current observations, adding them to the navigation
+  /// moments first if `new_observations` (not when the worlds or moments are restored).
+  void SeeObservations(bool new_observations);
 
   std::uint64_t env_seed_;
   RolloutRules rules_;
   BatchedEnvironment env_;
   RewardScaler reward_scaler_;
+  NavigationNormalizer navigation_normalizer_;
+  std::vector<float> observations_;  ///< the worlds' current observations as the policy sees them
+  std::vector<float> final_observation_;
   std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
   std::vector<FinishedEpisode> finished_;
   double env_seconds_ = 0.0;

@@ -69,7 +69,8 @@ class PpoTrainer {
         counters_(rollout_start_.counters),
         collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
-                   {options_.timeouts_terminal, options_.normalize_reward, options_.gamma}),
+                   {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,
+                    options_.normalize_navigation}),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env)) {
@@ -91,7 +92,8 @@ class PpoTrainer {
       counters_.wall_s = previous_wall_s + SecondsSince(start);
       logs_.Flush();
       SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_, rollout_start_,
-                     observation_settings_, keep_policy_copy);
+                     observation_settings_, collector_.navigation_normalization(),
+                     keep_policy_copy);
       summary_.checkpoint_s += SecondsSince(checkpoint_start);
     };
     const StopFlag stop_flag;
@@ -161,9 +163,9 @@ class PpoTrainer {
     return {counters.episodes, counters.rollouts, counters.global_step};
   }
 
-  // Resuming: the sampling generator, the worlds and the reward scaler as they were when the
-  // rollout in progress at the checkpoint started (LoadCheckpoint restored the weights and the
-  // optimiser).
+  // Resuming: the sampling generator, the worlds, the reward scaler and the navigation moments as
+  // they were when the rollout in progress at the checkpoint started (LoadCheckpoint restored the
+  // weights and the optimiser).
   void ContinueFromRolloutStart() {
     generator_.set_state(rollout_start_.generator_state);
     try {
@@ -171,6 +173,7 @@ class PpoTrainer {
       if (!rollout_start_.reward_scaling.returns.empty()) {
         collector_.RestoreRewardScaling(rollout_start_.reward_scaling);
       }
+      collector_.RestoreNavigationMoments(rollout_start_.navigation_moments);
     } catch (const std::invalid_argument& error) {
       throw UserError("training state '" + TrainingStatePath(run_dir_).string() +
                       "' does not fit the configured worlds: " + error.what());
@@ -184,6 +187,7 @@ class PpoTrainer {
     rollout_start_.generator_state = generator_.get_state();
     rollout_start_.worlds = collector_.world_histories();
     rollout_start_.reward_scaling = collector_.reward_scaling();
+    rollout_start_.navigation_moments = collector_.navigation_moments();
   }
 
   static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {

@@ -38,10 +38,11 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   start.generator_state = generator.get_state();
   start.worlds = {{4, {0.5, -1.0, 1.0, 0.25}}, {7, {}}};
   start.reward_scaling = {{-3.5, 12.25, 64.0001}, {-1.5, 20.0}};
+  for (int j = 0; j < kNavigationSize; ++j) start.navigation_moments[j] = {0.5 * j, 2.0 + j, 9.0};
   torch::randn({10}, generator);
   const TrainingCounters counters{30000, 12, 3, 17, 42.5};
   SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters, start,
-                 ObservationSettings{}, true);
+                 ObservationSettings{}, std::nullopt, true);
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "policy.pt"));
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "checkpoints" / "policy_30000.pt"));
 
@@ -65,6 +66,11 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   EXPECT_EQ(loaded.reward_scaling.return_variance.variance, 12.25);
   EXPECT_EQ(loaded.reward_scaling.return_variance.count, 64.0001);
   EXPECT_EQ(loaded.reward_scaling.returns, start.reward_scaling.returns);
+  for (int j = 0; j < kNavigationSize; ++j) {
+    EXPECT_EQ(loaded.navigation_moments[j].mean, 0.5 * j);
+    EXPECT_EQ(loaded.navigation_moments[j].variance, 2.0 + j);
+    EXPECT_EQ(loaded.navigation_moments[j].count, 9.0);
+  }
   const auto original = model->parameters(), copy = restored->parameters();
   for (std::size_t i = 0; i < original.size(); ++i) EXPECT_TRUE(torch::equal(original[i], copy[i]));
   EXPECT_EQ(restored_updater.optimizer().step_count(), 3);
@@ -90,7 +96,7 @@ TEST(PpoCheckpointTest, TruncatedStateIsAUserError) {
   RolloutStart start;
   start.generator_state = generator.get_state();
   SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, TrainingCounters{},
-                 start, ObservationSettings{}, false);
+                 start, ObservationSettings{}, std::nullopt, false);
   const std::filesystem::path state = TrainingStatePath(directory.path());
   std::filesystem::resize_file(state, std::filesystem::file_size(state) / 2);
   EXPECT_THROW(LoadCheckpoint(directory.path(), *model, updater.optimizer()), UserError);
@@ -181,27 +187,48 @@ TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
   EXPECT_EQ(ReadFile(whole / "policy.pt"), ReadFile(pieces / "policy.pt"));
 }
 
-// The reward scaler's returns run across the rollouts and episodes: a resume must restore them.
-TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
-  testing_util::TemporaryFolder directory;
-  const auto scaled = [](std::int64_t total_steps) {
+// Trains 160 steps with `key` true in one go (`whole`) and in two sessions of 64 and 160 steps
+// (`pieces`), and 160 steps without it (`plain`): for an option whose state runs across the
+// rollouts, which a resume must restore.
+struct RunsWithOption {
+  std::filesystem::path whole, pieces, plain;
+};
+RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::path& directory) {
+  const auto with_key = [&](std::int64_t total_steps) {
     Config config = ShortEpisodes(total_steps);
-    config.Set("ppo.normalize_reward", "true", "test");
+    config.Set(key, "true", "test");
     return config;
   };
-  const std::filesystem::path whole = directory.path() / "whole";
-  const std::filesystem::path pieces = directory.path() / "pieces";
-  const std::filesystem::path unscaled = directory.path() / "unscaled";
-  for (const auto& folder : {whole, pieces, unscaled}) std::filesystem::create_directories(folder);
-  Train(scaled(160), whole, /*resume=*/false);
-  Train(scaled(64), pieces, /*resume=*/false);
-  Train(scaled(160), pieces, /*resume=*/true);
-  Train(ShortEpisodes(160), unscaled, /*resume=*/false);
+  const RunsWithOption runs{directory / "whole", directory / "pieces", directory / "plain"};
+  for (const auto& folder : {runs.whole, runs.pieces, runs.plain}) {
+    std::filesystem::create_directories(folder);
+  }
+  Train(with_key(160), runs.whole, /*resume=*/false);
+  Train(with_key(64), runs.pieces, /*resume=*/false);
+  Train(with_key(160), runs.pieces, /*resume=*/true);
+  Train(ShortEpisodes(160), runs.plain, /*resume=*/false);
   // EXPECT_TRUE: a failure would print the binary files otherwise.
-  EXPECT_TRUE(ReadFile(whole / "episodes.csv") == ReadFile(pieces / "episodes.csv"));
-  EXPECT_TRUE(ReadFile(whole / "policy.pt") == ReadFile(pieces / "policy.pt"));
+  EXPECT_TRUE(ReadFile(runs.whole / "episodes.csv") == ReadFile(runs.pieces / "episodes.csv"));
+  EXPECT_TRUE(ReadFile(runs.whole / "policy.pt") == ReadFile(runs.pieces / "policy.pt"));
+  return runs;
+}
+
+// The reward scaler's returns run across the rollouts and episodes.
+TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOption("ppo.normalize_reward", directory.path());
   // The scaling changes what is learnt, not what the environment reports.
-  EXPECT_NE(ReadFile(whole / "updates.csv"), ReadFile(unscaled / "updates.csv"));
+  EXPECT_NE(ReadFile(runs.whole / "updates.csv"), ReadFile(runs.plain / "updates.csv"));
+}
+
+// The navigation moments run across the rollouts, and the exported policy carries them.
+TEST(PpoCheckpointTest, ExtendedRunWithNormalisedNavigationEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOption("ppo.normalize_navigation", directory.path());
+  // The policy sees other values, so it acts otherwise.
+  EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
+  EXPECT_TRUE(torch::jit::load((runs.whole / "policy.pt").string()).hasattr("navigation_mean"));
+  EXPECT_FALSE(torch::jit::load((runs.plain / "policy.pt").string()).hasattr("navigation_mean"));
 }
 
 TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogWithGarbageRows) {
