@@ -271,6 +271,14 @@ int BenchEnv(int argc, char** argv) {
                               " threads, async batches of " + std::to_string(async_batch),
                           asynchronous, one_thread);
   }
+  // What the hand-over between the threads keeps of what this machine's threads can do at all.
+  const double ceiling = independent.total.PerSecond();
+  std::printf("share of the ceiling: synchronous %.2f", batched.total.PerSecond() / ceiling);
+  if (async_batch > 0) {
+    std::printf(", async batches of %d %.2f", async_batch,
+                asynchronous.total.PerSecond() / ceiling);
+  }
+  std::printf("\n");
   std::printf("env_steps_per_s_1thread: %.0f\nenv_steps_per_s_batched: %.0f\n", random,
               batched.total.PerSecond());
   return 0;
