@@ -5,8 +5,8 @@
 namespace colav {
 
 void NavigationNormalizer::Update(const float* observations, int rows, int stride) {
+  column_.resize(rows);
   for (int j = 0; j < kNavigationSize; ++j) {
-    column_.resize(rows);
     for (int row = 0; row < rows; ++row) {
       column_[row] = observations[static_cast<std::ptrdiff_t>(row) * stride + j];
     }
