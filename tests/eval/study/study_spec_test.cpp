@@ -69,7 +69,7 @@ TEST(StudySpecTest, ShippedStudiesAreValid) {
       continue;
     }
     const StudySpec spec = LoadStudySpec(entry.path());
-    EXPECT_EQ(spec.ppo_seeds, 5) << name;
+    EXPECT_GE(spec.ppo_seeds, 5) << name;  // the claims rule: 5 training seeds or more
     EXPECT_EQ(spec.evaluation.episodes, 1000) << name;
     EXPECT_EQ(spec.evaluation.seed, 1U) << name;
     EXPECT_EQ(spec.evaluation.reference_agents.size(), 3U) << name;
