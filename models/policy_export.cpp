@@ -2,7 +2,6 @@
 
 #include <sstream>
 #include <string>
-#include <vector>
 
 #include "env/environment_spec.h"
 #include "models/observation_settings_record.h"
@@ -70,7 +69,7 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
 
 // A float32 tensor [kNavigationSize] of `values`.
 torch::Tensor NavigationTensor(const std::array<float, kNavigationSize>& values) {
-  return torch::tensor(std::vector<float>(values.begin(), values.end()), torch::kFloat32);
+  return torch::tensor(at::ArrayRef<float>(values), torch::kFloat32);
 }
 
 }  // namespace

@@ -148,33 +148,21 @@ Case Batched(int num_envs, int num_threads, std::uint64_t seed) {
 }
 
 // The ceiling of the batched case on this machine: the worlds split into one group per thread,
-// each group stepped by its own thread on its own, with no hand-over between the threads.
+// each group a 1-thread batched case stepped by its own thread, with no hand-over between them.
 Case Independent(int num_envs, int threads_wanted, std::uint64_t seed) {
   const int num_threads = std::min(threads_wanted, num_envs);  // as BatchedEnvironment's pool
-  struct Group {
-    std::unique_ptr<BatchedEnvironment> envs;
-    std::unique_ptr<RandomActions> actions;
-  };
-  auto groups = std::make_shared<std::vector<Group>>();
+  auto groups = std::make_shared<std::vector<Case>>();
   for (int k = 0; k < num_threads; ++k) {
-    const int worlds = ThreadPool::ShareStart(num_envs, num_threads, k + 1) -
-                       ThreadPool::ShareStart(num_envs, num_threads, k);
-    const std::uint64_t group_seed = DeriveSeed(seed, "bench-group", k);
-    groups->push_back(
-        {std::make_unique<BatchedEnvironment>(EnvironmentConfig{}, worlds, 1, group_seed),
-         std::make_unique<RandomActions>(worlds, group_seed)});
-    groups->back().envs->Reset();
+    groups->push_back(Batched(ThreadPool::ShareStart(num_envs, num_threads, k + 1) -
+                                  ThreadPool::ShareStart(num_envs, num_threads, k),
+                              1, DeriveSeed(seed, "bench-group", k)));
   }
   Case independent;
   independent.measure = [groups](double seconds) {
     std::vector<Measured> measured(groups->size());
     std::vector<std::thread> threads;
     for (std::size_t k = 0; k < groups->size(); ++k) {
-      threads.emplace_back([&, k] {
-        Group& group = (*groups)[k];
-        measured[k] =
-            Run(seconds, group.envs->num_envs(), [&] { group.envs->Step(group.actions->Draw()); });
-      });
+      threads.emplace_back([&, k] { measured[k] = (*groups)[k].measure(seconds); });
     }
     for (std::thread& thread : threads) thread.join();
     Measured all;

@@ -21,7 +21,9 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, 
       rules_(rules),
       env_(config, n_envs, threads, env_seed),
       reward_scaler_(n_envs, rules.gamma),
-      observations_(static_cast<std::size_t>(n_envs) * env_.observation_size()),
+      normalized_observations_(rules.normalize_navigation
+                                   ? static_cast<std::size_t>(n_envs) * env_.observation_size()
+                                   : 0),
       final_observation_(env_.observation_size()),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
       clipped_actions_(mean_.size()),
@@ -32,12 +34,17 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, 
 }
 
 void RolloutCollector::SeeObservations(bool new_observations) {
-  std::copy_n(env_.observations(), observations_.size(), observations_.data());
   if (!rules_.normalize_navigation) return;
   const int N = env_.num_envs();
-  if (new_observations)
-    navigation_normalizer_.Update(observations_.data(), N, env_.observation_size());
-  navigation_normalizer_.Normalize(observations_.data(), N, env_.observation_size());
+  std::copy_n(env_.observations(), normalized_observations_.size(),
+              normalized_observations_.data());
+  float* seen = normalized_observations_.data();
+  if (new_observations) navigation_normalizer_.Update(seen, N, env_.observation_size());
+  navigation_normalizer_.Normalize(seen, N, env_.observation_size());
+}
+
+const float* RolloutCollector::SeenObservations() const {
+  return rules_.normalize_navigation ? normalized_observations_.data() : env_.observations();
 }
 
 void RolloutCollector::RestoreWorlds(const std::vector<WorldHistory>& histories) {
@@ -68,7 +75,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   const float* epsilon = noise.data_ptr<float>();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
-    std::copy(observations_.begin(), observations_.end(), observations);
+    std::copy_n(SeenObservations(), N * env_.observation_size(), observations);
     policy.Predict(observations, N, mean_.data(), buffer.values(t));
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
@@ -108,7 +115,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     ValueFinalObservations(policy, t, buffer);
     if (!after_step(finished_)) return false;
   }
-  policy.Predict(observations_.data(), N, mean_.data(), buffer.last_values());
+  policy.Predict(SeenObservations(), N, mean_.data(), buffer.last_values());
   return true;
 }
 

@@ -86,16 +86,19 @@ class RolloutCollector {
 
  private:
   void ValueFinalObservations(FastActorCritic& policy, int t, RolloutBuffer& buffer);
-  /// Makes the policy's view of the worlds' current observations, adding them to the navigation
-  /// moments first if `new_observations` (not when the worlds or moments are restored).
+  /// With navigation normalisation, makes the policy's view of the worlds' current observations,
+  /// adding them to the navigation moments first if `new_observations` (not when the worlds or
+  /// moments are restored); otherwise the policy sees the environment's own.
   void SeeObservations(bool new_observations);
+  /// The worlds' current observations as the policy sees them.
+  const float* SeenObservations() const;
 
   std::uint64_t env_seed_;
   RolloutRules rules_;
   BatchedEnvironment env_;
   RewardScaler reward_scaler_;
   NavigationNormalizer navigation_normalizer_;
-  std::vector<float> observations_;  ///< the worlds' current observations as the policy sees them
+  std::vector<float> normalized_observations_;  ///< with navigation normalisation only
   std::vector<float> final_observation_;
   std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
   std::vector<FinishedEpisode> finished_;
