@@ -1,7 +1,9 @@
 // The PPO agent's actor-critic (Stable-Baselines3 ActorCriticPolicy with the paper's net_arch,
 // reference-learning 6.3): one feature extractor shared by actor and critic, then separate Tanh
 // MLPs (default [128, 64, 32]); the actor's Linear head gives the mean of a diagonal Gaussian with
-// a state-independent log std (init 0), the critic's gives the state value.
+// a state-independent log std (init 0), the critic's gives the state value. The environment gets
+// the Gaussian's sample clipped to [-1, 1] (SB3's default), or, with squash_actions, its tanh
+// (SB3's squash_output, SAC's distribution); the deterministic action is the mean treated alike.
 //
 // Initialisation (SB3 ortho_init): trunks orthogonal with gain sqrt(2), action head 0.01, value
 // head 1, biases 0. Unlike the reference (reference-learning 6.2), the pre-trained encoder keeps
@@ -14,6 +16,8 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -26,6 +30,10 @@ struct ActorCriticOptions {
   FeatureExtractorOptions extractor;
   std::vector<std::int64_t> hidden_sizes = {128, 64, 32};
   double log_std_init = 0.0;
+  /// Actions tanh(u) of u ~ N(mean, std) instead of clip(u, -1, 1): the action distribution stays
+  /// inside [-1, 1], so its entropy is bounded and the entropy bonus cannot widen the std without
+  /// end (train/ppo/loss.h).
+  bool squash_actions = false;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 };
 
@@ -68,6 +76,11 @@ class ActorCriticImpl : public torch::nn::Module {
   torch::Tensor log_std_;
 };
 TORCH_MODULE(ActorCritic);
+
+/// The action the environment gets for a Gaussian sample or mean `u` of one action dimension.
+inline float BoundedAction(float u, bool squash_actions) {
+  return squash_actions ? std::tanh(u) : std::clamp(u, -1.0f, 1.0f);
+}
 
 /// Fills `weight` (rows = dim 0) with a random orthogonal matrix times `gain`, drawn from
 /// `generator` (torch.nn.init.orthogonal_'s algorithm).

@@ -67,6 +67,12 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
   return source.str();
 }
 
+// The deterministic action from the Gaussian's `mean`: BoundedAction of models/actor_critic.h.
+std::string DeterministicActionSource(const std::string& mean, const ActorCriticImpl& model) {
+  return model.options().squash_actions ? "torch.tanh(" + mean + ")"
+                                        : "torch.clamp(" + mean + ", -1.0, 1.0)";
+}
+
 // A float32 tensor [kNavigationSize] of `values`.
 torch::Tensor NavigationTensor(const std::array<float, kNavigationSize>& values) {
   return torch::tensor(at::ArrayRef<float>(values), torch::kFloat32);
@@ -96,7 +102,8 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
                 "def forward(self, obs: Tensor) -> Tensor:\n"
                 "    f = self.features(obs)\n" +
                 TrunkSource(model.mlp_extractor()->policy_net, "mlp_extractor.policy_net") +
-                "    return torch.clamp(" + LinearSource("h", "action_net") + ", -1.0, 1.0)\n" +
+                "    return " + DeterministicActionSource(LinearSource("h", "action_net"), model) +
+                "\n" +
                 "def value(self, obs: Tensor) -> Tensor:\n"
                 "    f = self.features(obs)\n" +
                 TrunkSource(model.mlp_extractor()->value_net, "mlp_extractor.value_net") +

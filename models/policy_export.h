@@ -4,7 +4,8 @@
 // torch::jit::load in C++.
 //
 //   forward(obs: float32 [B, 6 + 180 * scans]) -> action [B, 2]: the Gaussian's mean clipped to
-//                                     [-1, 1] (the deterministic action);
+//                                     [-1, 1], or its tanh for a policy trained with squashed
+//                                     actions (policy.squash_actions): the deterministic action;
 //   value(obs) -> [B, 1];  features(obs) -> [B, 6 + scans * P] (the extractor's output, [B, 18]
 //   for one scan and the paper's extractors).
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead

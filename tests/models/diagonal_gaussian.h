@@ -1,6 +1,7 @@
 // The policy's action distribution written with tensor operations: a diagonal Gaussian with a
 // state-independent log standard deviation (Stable-Baselines3's DiagGaussianDistribution), no
-// squashing; actions are clipped to [-1, 1] only at the environment boundary. The reference the
+// squashing here (tests/train/ppo/reference_ppo_loss.h has the tanh-squashed distribution's
+// entropy); actions are clipped or squashed only at the environment boundary. The reference the
 // hand-written rollout and loss kernels (models/actor_critic_fast.h, train/ppo/loss.h) are tested
 // against.
 #pragma once

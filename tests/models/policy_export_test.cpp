@@ -19,7 +19,9 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
   obs.narrow(1, 0, kNavigationSize).mul_(200.0).sub_(100.0);  // big means: clipping matters
   const auto [mean, value] = model->forward(obs);
   const torch::Tensor action = loaded.forward({obs}).toTensor();
-  EXPECT_TRUE(torch::allclose(action, mean.clamp(-1.0, 1.0), 1e-5, 1e-6));
+  const torch::Tensor deterministic =
+      model->options().squash_actions ? torch::tanh(mean) : mean.clamp(-1.0, 1.0);
+  EXPECT_TRUE(torch::allclose(action, deterministic, 1e-5, 1e-6));
   EXPECT_LE(action.abs().max().item<float>(), 1.0f);
   EXPECT_TRUE(torch::allclose(loaded.get_method("value")({obs}).toTensor(), value, 1e-5, 1e-5));
   EXPECT_TRUE(torch::allclose(loaded.get_method("features")({obs}).toTensor(),
@@ -36,6 +38,16 @@ TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
   options.log_std_init = -0.5;
   ActorCritic model(options);
   // Large action-head weights, so that some means fall outside [-1, 1].
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.normal_(0.0, 3.0);
+  ExpectExportMatches(model, directory.path() / "policy.pt");
+}
+
+TEST(PolicyExportTest, ASquashingPolicyActsWithTheTanhOfItsMean) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.squash_actions = true;
+  ActorCritic model(options);
   torch::NoGradGuard no_grad;
   model->action_net()->weight.normal_(0.0, 3.0);
   ExpectExportMatches(model, directory.path() / "policy.pt");

@@ -200,6 +200,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Number(
           "policy.log_std_init", [](Run & o) -> auto& { return o.model.log_std_init; },
           "initial log std of the action distribution (std e^-10 to e^2)", -10.0, 2.0)
+      .Bool(
+          "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
+          "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "
+          "it to [-1, 1]; the entropy bonus is then the bounded distribution's")
       .Coded("extractor.name", [](Run & o) -> auto& { return o.model.extractor.kind; },
              "perception feature extractor",
              TextCodec<ExtractorKind>{ExtractorKindName, ParseExtractorKind},

@@ -13,6 +13,13 @@ namespace {
 constexpr double kAdvantageEpsilon = 1e-8;
 const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
 
+// log(1 - tanh(u)^2) = 2 (log 2 - u - softplus(-2u)), without cancellation for large |u|.
+double LogOneMinusTanhSquared(double u) {
+  const double y = -2.0 * u;
+  const double softplus = std::max(y, 0.0) + std::log1p(std::exp(-std::abs(y)));
+  return 2.0 * (std::log(2.0) - u - softplus);
+}
+
 }  // namespace
 
 PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const float* value,
@@ -36,7 +43,7 @@ PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const flo
     log_std_sum += log_std[j];
     d_log_std[j] = 0.0f;
   }
-  const double entropy = kActionSize * (0.5 + kLogSqrtTwoPi) + log_std_sum;
+  double entropy = kActionSize * (0.5 + kLogSqrtTwoPi) + log_std_sum;
 
   PpoLossStats stats;
   const double low = 1.0 - options.clip_range;
@@ -63,6 +70,16 @@ PpoLossStats PpoLossGradients(const float* mean, const float* log_std, const flo
     for (int j = 0; j < kActionSize; ++j) {
       d_mean[j * B + b] = static_cast<float>(d_log_prob * z[j] * inverse_std[j]);
       d_log_std_sum[j] += d_log_prob * (z[j] * z[j] - 1.0);
+    }
+    if (options.squashed_actions) {
+      for (int j = 0; j < kActionSize; ++j) {
+        const double u = batch.actions[b * kActionSize + j];
+        const double squash = std::tanh(u);
+        entropy += LogOneMinusTanhSquared(u) / B;
+        // -ent_coef times the entropy's gradient (loss.h), with u - mean = z std.
+        d_mean[j * B + b] += static_cast<float>(options.ent_coef * 2.0 * squash / B);
+        d_log_std_sum[j] += options.ent_coef * 2.0 * squash * z[j] / (inverse_std[j] * B);
+      }
     }
     const double error = value[b] - batch.returns[b];
     stats.value_loss += error * error;

@@ -3,6 +3,14 @@
 //   r  = exp(log pi(a|s) - log pi_old(a|s))
 //   L  = -mean(min(r A', clip(r, 1 - c, 1 + c) A')) + ent_coef * (-mean entropy)
 //        + vf_coef * mean((returns - V)^2)
+// The entropy is the Gaussian's, sum_j (1/2 + log sqrt(2 pi) + log std_j). For tanh-squashed
+// actions (squashed_actions) it is that of tanh(u), u ~ N(mean, std), which has no closed form:
+//   H = Gaussian entropy + E[sum_j log(1 - tanh(u_j)^2)],
+// estimated on the minibatch's stored samples u, reparametrised as u = mean + std * eps with eps
+// held fixed, so that it has gradients d/d mean = -2 tanh(u) and d/d log std = -2 tanh(u) (u -
+// mean). It is largest near std 0.8 and falls as the std grows (tanh piles the samples at +-1), so
+// the bonus no longer widens the std without end. (SB3 estimates it by -mean log-probability of the
+// stored actions, whose gradient vanishes at the old policy.)
 // PpoLossGradients gives the loss with its gradients in closed form for the hand-written backward
 // pass (FastActorCritic); the tests check it against an autograd reference
 // (tests/train/ppo/reference_ppo_loss.h).
@@ -15,6 +23,8 @@ struct PpoLossOptions {
   double ent_coef = 0.01;
   double vf_coef = 0.5;
   bool normalize_advantage = true;
+  /// Actions are tanh of the Gaussian samples: the entropy term is the squashed distribution's.
+  bool squashed_actions = false;
 };
 
 /// One minibatch's loss terms, named as SB3 logs them.
@@ -22,7 +32,7 @@ struct PpoLossStats {
   double loss = 0.0;
   double policy_gradient_loss = 0.0;
   double value_loss = 0.0;
-  double entropy_loss = 0.0;   ///< -mean entropy
+  double entropy_loss = 0.0;   ///< -mean entropy (squashed: its minibatch estimate)
   double approx_kl = 0.0;      ///< mean((r - 1) - log r)
   double clip_fraction = 0.0;  ///< fraction of samples with |r - 1| > clip_range
 };

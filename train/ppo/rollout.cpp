@@ -26,7 +26,7 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, 
                                    : 0),
       final_observation_(env_.observation_size()),
       mean_(static_cast<std::size_t>(n_envs) * kActionSize),
-      clipped_actions_(mean_.size()),
+      bounded_actions_(mean_.size()),
       scratch_values_(n_envs),
       scratch_means_(kActionSize) {
   env_.Reset();
@@ -85,13 +85,13 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
         const int k = e * kActionSize + j;
         const float eps = epsilon[(t * N) * kActionSize + k];
         actions[k] = mean_[k] + std[j] * eps;
-        clipped_actions_[k] = std::clamp(actions[k], -1.0f, 1.0f);
+        bounded_actions_[k] = BoundedAction(actions[k], rules_.squash_actions);
         log_prob -= 0.5 * static_cast<double>(eps) * eps;
       }
       buffer.log_probs(t)[e] = static_cast<float>(log_prob);
     }
     const auto step_start = std::chrono::steady_clock::now();
-    env_.Step(clipped_actions_.data());
+    env_.Step(bounded_actions_.data());
     env_seconds_ +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
     SeeObservations(true);

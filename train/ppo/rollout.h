@@ -47,6 +47,11 @@ struct RolloutRules {
   /// (navigation_normalizer.h); the running moments take in each step's new observations, as
   /// SB3's VecNormalize does (not a final observation, which is only normalised).
   bool normalize_navigation = false;
+  /// The environment gets tanh of each sampled action instead of the sample clipped to [-1, 1]
+  /// (ActorCriticOptions::squash_actions). The buffer keeps the Gaussian samples and their
+  /// Gaussian log-probabilities either way: tanh's Jacobian term is the same for the old and the
+  /// new policy at a stored sample, so PPO's probability ratio does not change.
+  bool squash_actions = false;
 };
 
 class RolloutCollector {
@@ -100,7 +105,7 @@ class RolloutCollector {
   NavigationNormalizer navigation_normalizer_;
   std::vector<float> normalized_observations_;  ///< with navigation normalisation only
   std::vector<float> final_observation_;
-  std::vector<float> mean_, clipped_actions_, scratch_values_, scratch_means_;
+  std::vector<float> mean_, bounded_actions_, scratch_values_, scratch_means_;
   std::vector<FinishedEpisode> finished_;
   double env_seconds_ = 0.0;
 };

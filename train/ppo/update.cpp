@@ -17,7 +17,10 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
       advantages_(options.batch_size),
       returns_(options.batch_size),
       d_mean_(static_cast<std::size_t>(options.batch_size) * kActionSize),
-      d_value_(options.batch_size) {}
+      d_value_(options.batch_size) {
+  // The model decides the action distribution, and with it the entropy the bonus rewards.
+  options_.loss.squashed_actions = model->options().squash_actions;
+}
 
 PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
   const bool frozen_features = !policy_.extractor_trainable();

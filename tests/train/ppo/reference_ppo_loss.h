@@ -14,6 +14,16 @@ struct PpoLossResult {
   PpoLossStats stats;
 };
 
+/// The entropy of tanh(u), u ~ N(mean, std), estimated on the samples `actions` (= u), each
+/// reparametrised as mean + std * eps with eps fixed (train/ppo/loss.h): [B].
+inline torch::Tensor SquashedEntropy(const DiagonalGaussian& distribution,
+                                     const torch::Tensor& actions) {
+  const torch::Tensor std = torch::exp(distribution.log_std);
+  const torch::Tensor eps = ((actions - distribution.mean) / std).detach();
+  const torch::Tensor u = distribution.mean + std * eps;
+  return distribution.Entropy() + torch::log(1 - torch::tanh(u).square()).sum(-1);
+}
+
 /// The loss of a minibatch from the current policy's distribution, values [B] (or [B, 1]), and the
 /// minibatch's actions [B, 2], old log-probabilities, advantages and returns [B].
 inline PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::Tensor& values,
@@ -31,7 +41,9 @@ inline PpoLossResult PpoLoss(const DiagonalGaussian& distribution, const torch::
   const torch::Tensor policy_loss =
       -torch::min(normalized * ratio, normalized * clipped_ratio).mean();
   const torch::Tensor value_loss = torch::mse_loss(returns, values.flatten());
-  const torch::Tensor entropy_loss = -distribution.Entropy().mean();
+  const torch::Tensor entropy_loss =
+      -(options.squashed_actions ? SquashedEntropy(distribution, actions) : distribution.Entropy())
+           .mean();
   PpoLossResult result;
   result.loss = policy_loss + options.ent_coef * entropy_loss + options.vf_coef * value_loss;
   torch::NoGradGuard no_grad;

@@ -1,9 +1,11 @@
-// Which episode ends continue their return with gamma * V(final observation), and what the
-// policy sees with normalised navigation values.
+// Which episode ends continue their return with gamma * V(final observation), what the policy sees
+// with normalised navigation values, and which actions the worlds get.
 #include "train/ppo/rollout.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace colav {
@@ -52,6 +54,38 @@ TEST(RolloutCollectorTest, TheBufferHoldsNormalisedNavigationValues) {
                               : std::vector<float>(raw.observations(),
                                                    raw.observations() + kWorlds * width));
     EXPECT_EQ(collector.navigation_normalization().has_value(), normalize);
+  }
+}
+
+// The buffer keeps the Gaussian samples; the worlds get them clipped, or squashed by tanh.
+TEST(RolloutCollectorTest, TheWorldsGetClippedOrSquashedSamples) {
+  constexpr int kWorlds = 2;
+  constexpr std::uint64_t kSeed = 5;
+  const EnvironmentConfig config;
+  for (const bool squash : {false, true}) {
+    RolloutRules rules;
+    rules.squash_actions = squash;
+    RolloutCollector collector(config, kWorlds, 1, kSeed, rules);
+    FastActorCritic policy(ActorCritic(ActorCriticOptions{}), kWorlds);
+    BatchedEnvironment by_hand(config, kWorlds, 1, kSeed);
+    const int width = by_hand.observation_size();
+    RolloutBuffer buffer(2, kWorlds, width);
+    // Samples near +-1.5 (std 1): clipping gives +-1, tanh about +-0.9.
+    const torch::Tensor noise =
+        torch::tensor({1.5f, -1.5f, -1.5f, 1.5f}).repeat({2}).reshape({2, kWorlds, kActionSize});
+    collector.Collect(policy, noise, buffer,
+                      [](const std::vector<FinishedEpisode>&) { return true; });
+    std::vector<float> actions(kWorlds * kActionSize);
+    for (int k = 0; k < kWorlds * kActionSize; ++k) {
+      EXPECT_NEAR(buffer.actions(0)[k], noise[0].flatten()[k].item<float>(), 0.1);
+      actions[k] =
+          squash ? std::tanh(buffer.actions(0)[k]) : std::clamp(buffer.actions(0)[k], -1.0f, 1.0f);
+    }
+    by_hand.Reset();
+    by_hand.Step(actions.data());
+    EXPECT_EQ(std::vector<float>(buffer.observations(1), buffer.observations(1) + kWorlds * width),
+              std::vector<float>(by_hand.observations(), by_hand.observations() + kWorlds * width))
+        << (squash ? "squashed" : "clipped");
   }
 }
 
