@@ -100,6 +100,19 @@ std::string Cell(const ImprovementEstimate& estimate) {
                      estimate.ci.high);
 }
 
+nlohmann::json ToJson(const OutcomeBreakdown& outcomes) {
+  nlohmann::json json = {{"time_out_scenarios", outcomes.time_out_scenarios},
+                         {"time_out_every_seed", outcomes.time_out_every_seed}};
+  for (const auto& [name, part] : {std::pair{"collision", outcomes.collision},
+                                   {"time_out", outcomes.time_out},
+                                   {"rest", outcomes.rest}}) {
+    json[name] = {{"share", part.share},
+                  {"progress_lost", part.progress_lost},
+                  {"cross_track_error", part.cross_track_error}};
+  }
+  return json;
+}
+
 nlohmann::json ToJson(const ScenarioSetReport& report) {
   nlohmann::json json = {{"episodes", report.episodes}};
   for (const ModelSummary& model : report.models) {
@@ -111,7 +124,10 @@ nlohmann::json ToJson(const ScenarioSetReport& report) {
                        {"interval", e.method},
                        {"iqm", e.iqm}};
     }
-    json["models"].push_back({{"name", model.name}, {"seeds", model.seeds}, {"metrics", metrics}});
+    json["models"].push_back({{"name", model.name},
+                              {"seeds", model.seeds},
+                              {"metrics", metrics},
+                              {"outcomes", ToJson(model.outcomes)}});
   }
   json["probability_of_improvement"] = nlohmann::json::array();
   for (const ImprovementSummary& row : report.improvements) {
@@ -154,6 +170,29 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
     md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
        << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
        << Cell(row.metrics.at("collision")) << " |\n";
+  }
+}
+
+std::string Cell(const OutcomePart& part) {
+  return fmt::format("{:.2f} ({:.1f} %)", part.progress_lost, part.share);
+}
+
+void OutcomeTable(std::ostringstream& md, const ScenarioSetReport& report) {
+  md << "\nWhere the progress and the cross-track error go: the points of mean progress lost and "
+        "the metres of mean cross-track error from the episodes that collided, timed out, or "
+        "ended otherwise (at the goal, which the goal test declares within 5 m of the end or at "
+        "99 % of the path: about a point lost even without a failure), each with its share of the "
+        "episodes; and the scenarios with a time-out, of which those where every seed timed "
+        "out.\n\n"
+        "| model | progress lost: collisions | time-outs | the rest | cte m: collisions | "
+        "time-outs | the rest | time-out scenarios (every seed) |\n"
+        "|---|---|---|---|---|---|---|---|\n";
+  for (const ModelSummary& model : report.models) {
+    const OutcomeBreakdown& o = model.outcomes;
+    md << fmt::format("| {} | {} | {} | {} | {:.1f} | {:.1f} | {:.1f} | {} ({}) |\n", model.name,
+                      Cell(o.collision), Cell(o.time_out), Cell(o.rest),
+                      o.collision.cross_track_error, o.time_out.cross_track_error,
+                      o.rest.cross_track_error, o.time_out_scenarios, o.time_out_every_seed);
   }
 }
 
@@ -220,7 +259,7 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
   report.episodes = results.episodes;
   const auto groups = Groups(spec, results);
   for (const auto& [name, seeds] : groups) {
-    ModelSummary summary{name, static_cast<int>(seeds.size()), {}};
+    ModelSummary summary{name, static_cast<int>(seeds.size()), {}, BreakDownOutcomes(seeds)};
     for (const StudyMetric& metric : StudyMetrics()) {
       summary.metrics[metric.name] = Estimate(seeds, metric);
     }
@@ -275,6 +314,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     ModelTable(md, report);
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
+    OutcomeTable(md, report);
     if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);
   }
   JobFigures(md, spec, out);

@@ -1,6 +1,7 @@
 // The study's report: each model's metrics with intervals (over training seeds for our PPO
 // configurations, over scenarios for single agents), the probability that one configuration beats
-// another on a random scenario and seed, and the paper's table beside ours. Written as
+// another on a random scenario and seed, where each model's progress and cross-track error go
+// (outcome_breakdown.h), and the paper's table beside ours. Written as
 // OUT/REPORT.md and OUT/summary.json (every figure of the report, machine-readable).
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/outcome_breakdown.h"
 #include "eval/study/study_results.h"
 #include "src/seed_aggregates.h"
 
@@ -25,6 +27,7 @@ struct ModelSummary {
   std::string name;  ///< configuration name, or the single model's name
   int seeds = 1;
   std::map<std::string, MetricEstimate> metrics;
+  OutcomeBreakdown outcomes;
 };
 
 struct ImprovementSummary {

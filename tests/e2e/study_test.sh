@@ -60,6 +60,9 @@ for name, episodes in (("study", 6), ("paper", 4)):
         assert 0 <= c["low"] <= c["mean"] <= c["high"] <= 100
         assert c["interval"] == "bootstrap over seeds"
         assert 0 <= m["metrics"]["time_out"]["mean"] <= 100
+        o = m["outcomes"]
+        lost = sum(o[part]["progress_lost"] for part in ("collision", "time_out", "rest"))
+        assert abs(lost - (100 - m["metrics"]["progress"]["mean"])) < 1e-6, (lost, m)
     poi = sset["probability_of_improvement"]
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1

@@ -78,5 +78,31 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_EQ(report.improvements[2].model, "baseline");
 }
 
+// Two seeds, three scenarios: seed 0 collides at 40 % and times out at 20 % on scenario 1, seed 1
+// times out there too; the other episodes end at 99 %.
+TEST(StudyReportTest, WhereTheProgressAndTheCrossTrackErrorGo) {
+  const ModelEpisodes seed_0 = Episodes({40, 20, 99}, {10, 50, 20}, {100, 0, 0});
+  const ModelEpisodes seed_1 = Episodes({99, 20, 99}, {20, 30, 20}, {0, 0, 0});
+  const OutcomeBreakdown o = BreakDownOutcomes({&seed_0, &seed_1});
+  // Of 6 episodes: 1 collision (60 points lost, 10 m), 2 time-outs (160 points, 80 m), 3 at 99 %.
+  EXPECT_NEAR(o.collision.share, 100.0 / 6, 1e-12);
+  EXPECT_NEAR(o.collision.progress_lost, 60.0 / 6, 1e-12);
+  EXPECT_NEAR(o.collision.cross_track_error, 10.0 / 6, 1e-12);
+  EXPECT_NEAR(o.time_out.share, 200.0 / 6, 1e-12);
+  EXPECT_NEAR(o.time_out.progress_lost, 160.0 / 6, 1e-12);
+  EXPECT_NEAR(o.time_out.cross_track_error, 80.0 / 6, 1e-12);
+  EXPECT_NEAR(o.rest.share, 50.0, 1e-12);
+  EXPECT_NEAR(o.rest.progress_lost, 0.5, 1e-12);
+  EXPECT_NEAR(o.rest.cross_track_error, 10.0, 1e-12);
+  // The parts add up to 100 - mean progress (377 / 6).
+  EXPECT_NEAR(o.collision.progress_lost + o.time_out.progress_lost + o.rest.progress_lost,
+              100.0 - 377.0 / 6, 1e-12);
+  EXPECT_EQ(o.time_out_scenarios, 1);
+  EXPECT_EQ(o.time_out_every_seed, 1);
+  EXPECT_EQ(BreakDownOutcomes({&seed_0}).time_out_every_seed, 1);
+  const ModelEpisodes no_time_out = Episodes({99, 99, 99}, {20, 20, 20}, {0, 0, 0});
+  EXPECT_EQ(BreakDownOutcomes({&seed_0, &no_time_out}).time_out_every_seed, 0);
+}
+
 }  // namespace
 }  // namespace colav
