@@ -231,6 +231,13 @@ TEST(PpoCheckpointTest, ExtendedRunWithNormalisedNavigationEqualsTheUninterrupte
   EXPECT_FALSE(torch::jit::load((runs.plain / "policy.pt").string()).hasattr("navigation_mean"));
 }
 
+// A resume replays the worlds' recorded actions: squashed ones, here.
+TEST(PpoCheckpointTest, ExtendedRunWithSquashedActionsEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOption("policy.squash_actions", directory.path());
+  EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
+}
+
 TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogWithGarbageRows) {
   testing_util::TemporaryFolder directory;
   Train(ShortEpisodes(64), directory.path(), /*resume=*/false);
