@@ -7,10 +7,10 @@
 // actions (squashed_actions) it is that of tanh(u), u ~ N(mean, std), which has no closed form:
 //   H = Gaussian entropy + E[sum_j log(1 - tanh(u_j)^2)],
 // estimated on the minibatch's stored samples u, reparametrised as u = mean + std * eps with eps
-// held fixed, so that it has gradients d/d mean = -2 tanh(u) and d/d log std = -2 tanh(u) (u -
-// mean). It is largest near std 0.8 and falls as the std grows (tanh piles the samples at +-1), so
-// the bonus no longer widens the std without end. (SB3 estimates it by -mean log-probability of the
-// stored actions, whose gradient vanishes at the old policy.)
+// held fixed, so that its gradients are d/d mean = -2 tanh(u), d/d log std = -2 tanh(u) (u - mean).
+// For mean 0 it is largest near std 0.87 and falls as the std grows (tanh piles the samples at
+// +-1), so the bonus no longer widens the std without end. (SB3 estimates it by -mean
+// log-probability of the stored actions, whose gradient vanishes at the old policy.)
 // PpoLossGradients gives the loss with its gradients in closed form for the hand-written backward
 // pass (FastActorCritic); the tests check it against an autograd reference
 // (tests/train/ppo/reference_ppo_loss.h).
