@@ -90,6 +90,8 @@ class FastActorCritic {
   /// Values per observation row: 6 navigation values, then scans x 180 closeness values.
   int observation_size() const { return observation_size_; }
   const float* log_std() const { return log_std_.data_ptr<float>(); }
+  /// Whether the environment gets tanh of the sampled actions (ActorCriticOptions::squash_actions).
+  bool squash_actions() const { return model_->options().squash_actions; }
 
  private:
   void ForwardExtractor(const float* const* rows, int B);

@@ -73,6 +73,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     log_prob_constant -= log_std[j];
   }
   const float* epsilon = noise.data_ptr<float>();
+  const bool squash = policy.squash_actions();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
     std::copy_n(SeenObservations(), N * env_.observation_size(), observations);
@@ -85,7 +86,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
         const int k = e * kActionSize + j;
         const float eps = epsilon[(t * N) * kActionSize + k];
         actions[k] = mean_[k] + std[j] * eps;
-        bounded_actions_[k] = BoundedAction(actions[k], rules_.squash_actions);
+        bounded_actions_[k] = BoundedAction(actions[k], squash);
         log_prob -= 0.5 * static_cast<double>(eps) * eps;
       }
       buffer.log_probs(t)[e] = static_cast<float>(log_prob);

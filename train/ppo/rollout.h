@@ -1,6 +1,8 @@
 // Collects PPO rollouts from the batched environment (SB3 collect_rollouts, reference-learning
-// 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] for the environment
-// only (the buffer keeps the unclipped sample and its log-probability), a truncated episode's
+// 6.3): actions are sampled from the policy's Gaussian, clipped to [-1, 1] (or, for a policy that
+// squashes its actions, put through tanh) for the environment only (the buffer keeps the Gaussian
+// sample and its Gaussian log-probability: tanh's Jacobian term is the same for the old and the
+// new policy at a stored sample, so PPO's probability ratio does not change), a truncated episode's
 // final observation is valued for bootstrapping (BootstrapsFromFinalObservation), and optionally
 // the rewards are scaled (reward_scaling.h) and the navigation values the policy sees normalised
 // (navigation_normalizer.h).
@@ -47,11 +49,6 @@ struct RolloutRules {
   /// (navigation_normalizer.h); the running moments take in each step's new observations, as
   /// SB3's VecNormalize does (not a final observation, which is only normalised).
   bool normalize_navigation = false;
-  /// The environment gets tanh of each sampled action instead of the sample clipped to [-1, 1]
-  /// (ActorCriticOptions::squash_actions). The buffer keeps the Gaussian samples and their
-  /// Gaussian log-probabilities either way: tanh's Jacobian term is the same for the old and the
-  /// new policy at a stored sample, so PPO's probability ratio does not change.
-  bool squash_actions = false;
 };
 
 class RolloutCollector {

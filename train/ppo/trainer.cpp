@@ -70,7 +70,7 @@ class PpoTrainer {
         collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
                    {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,
-                    options_.normalize_navigation, options.model.squash_actions}),
+                    options_.normalize_navigation}),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env)) {

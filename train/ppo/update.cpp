@@ -19,7 +19,7 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
       d_mean_(static_cast<std::size_t>(options.batch_size) * kActionSize),
       d_value_(options.batch_size) {
   // The model decides the action distribution, and with it the entropy the bonus rewards.
-  options_.loss.squashed_actions = model->options().squash_actions;
+  options_.loss.squashed_actions = policy_.squash_actions();
 }
 
 PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {

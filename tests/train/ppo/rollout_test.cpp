@@ -63,10 +63,10 @@ TEST(RolloutCollectorTest, TheWorldsGetClippedOrSquashedSamples) {
   constexpr std::uint64_t kSeed = 5;
   const EnvironmentConfig config;
   for (const bool squash : {false, true}) {
-    RolloutRules rules;
-    rules.squash_actions = squash;
-    RolloutCollector collector(config, kWorlds, 1, kSeed, rules);
-    FastActorCritic policy(ActorCritic(ActorCriticOptions{}), kWorlds);
+    RolloutCollector collector(config, kWorlds, 1, kSeed, RolloutRules{});
+    ActorCriticOptions options;
+    options.squash_actions = squash;
+    FastActorCritic policy(ActorCritic(options), kWorlds);
     BatchedEnvironment by_hand(config, kWorlds, 1, kSeed);
     const int width = by_hand.observation_size();
     RolloutBuffer buffer(2, kWorlds, width);
