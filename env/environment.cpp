@@ -16,6 +16,7 @@ constexpr double kCteObservationScale = 100.0;
 Environment::Environment(EnvironmentConfig config, std::shared_ptr<const ScenarioSource> source)
     : config_(config),
       source_(std::move(source)),
+      world_(config_.obstacle_list_refresh),
       scan_ring_(config_.scan_history == 0 ? 0
                                            : static_cast<std::size_t>(config_.scan_history) *
                                                      config_.scan_history_interval * kNumRays +

@@ -8,6 +8,8 @@ namespace {
 // Bounds of the scan history: a ring of at most 16 x 100 scans (1.1 MB) per world.
 constexpr int kMaxScanHistory = 15;
 constexpr int kMaxScanHistoryInterval = 100;
+// An obstacle list kept longer than an episode's default 2,000 steps is a typo.
+constexpr int kMaxObstacleListRefresh = 2000;
 
 }  // namespace
 
@@ -45,7 +47,12 @@ OptionsBinding<EnvironmentConfig> EnvironmentBinding() {
               "earlier range scans appended to the observation (0: the paper's observation)", 0,
               kMaxScanHistory)
       .Number("env.scan_history_interval", &Env::scan_history_interval,
-              "steps between two scans of that history", 1, kMaxScanHistoryInterval);
+              "steps between two scans of that history", 1, kMaxScanHistoryInterval)
+      .Number("env.obstacle_list_refresh", &Env::obstacle_list_refresh,
+              "0: the range-finder sees every obstacle every step; N: only those within 150 m of "
+              "the hull at the reset or the last multiple of N steps (the reference's list, 25 in "
+              "the authors' training; collisions unaffected)",
+              0, kMaxObstacleListRefresh);
   return binding;
 }
 

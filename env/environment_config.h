@@ -17,8 +17,8 @@ std::string ClosenessTransformName(ClosenessTransform transform);
 TextCodec<ClosenessTransform> ClosenessTransformCodec();
 
 /// env.closeness, env.test_mode, env.max_steps, env.goal_radius, env.goal_progress,
-/// env.min_cumulative_reward, env.scan_history, env.scan_history_interval; a program includes
-/// them with its own defaults.
+/// env.min_cumulative_reward, env.scan_history, env.scan_history_interval,
+/// env.obstacle_list_refresh; a program includes them with its own defaults.
 OptionsBinding<EnvironmentConfig> EnvironmentBinding();
 
 }  // namespace colav

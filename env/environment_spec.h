@@ -41,6 +41,12 @@ struct EnvironmentConfig {
   int scan_history = 0;
   /// Steps between two consecutive scans of that history.
   int scan_history_interval = 5;
+  /// 0: the range-finder tests every obstacle every step. N > 0: the reference's nearby-obstacle
+  /// list (reference-simulator 6.2; 25 in the authors' training): the range-finder sees only the
+  /// obstacles within 150 m of the vessel's hull when the list was last rebuilt, at the reset and
+  /// every N steps, so one that comes into range in between stays unseen until the next rebuild.
+  /// Collisions are checked against every obstacle either way.
+  int obstacle_list_refresh = 0;
 };
 
 /// Range scans in an observation: the current one, then the history, newest first. Before an

@@ -1,6 +1,8 @@
 #include "env/obstacles.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace colav {
 
@@ -30,6 +32,23 @@ ConvexPolygon VesselHull(const Eigen::Vector2d& position, double width, double h
 void Translate(ConvexPolygon& polygon, const Eigen::Vector2d& offset) {
   for (int k = 0; k < polygon.size; ++k) polygon.vertices[k] += offset;
   polygon.bound_center += offset;
+}
+
+double DistanceToPolygon(const Eigen::Vector2d& point, const ConvexPolygon& polygon) {
+  bool inside = true;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < polygon.size; ++k) {
+    const Eigen::Vector2d& start = polygon.vertices[k];
+    const Eigen::Vector2d edge = polygon.vertices[(k + 1) % polygon.size] - start;
+    if (polygon.normals[k].dot(point - start) > 0.0) inside = false;
+    const double along = std::clamp((point - start).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
+    nearest = std::min(nearest, (start + along * edge - point).norm());
+  }
+  return inside ? 0.0 : nearest;
+}
+
+double DistanceToCircleBoundary(const Eigen::Vector2d& point, const CircleSpec& circle) {
+  return std::fabs((point - circle.center).norm() - circle.radius);
 }
 
 MovingObstacle::MovingObstacle(const VesselObstacleSpec& spec)

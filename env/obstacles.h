@@ -25,6 +25,13 @@ ConvexPolygon VesselHull(const Eigen::Vector2d& position, double width, double h
 /// Moves a polygon by `offset` (vertices and bounding circle).
 void Translate(ConvexPolygon& polygon, const Eigen::Vector2d& offset);
 
+/// Distance from `point` to the filled polygon: 0 inside, else to its nearest edge.
+double DistanceToPolygon(const Eigen::Vector2d& point, const ConvexPolygon& polygon);
+
+/// Distance from `point` to the circle's boundary (the reference measures a static obstacle by
+/// its ring, so a point inside is as far as the ring is).
+double DistanceToCircleBoundary(const Eigen::Vector2d& point, const CircleSpec& circle);
+
 /// A vessel moving at constant velocity along its course.
 class MovingObstacle {
  public:

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -23,7 +24,8 @@ inline constexpr double kTimeStep = 1.0;
 
 class World {
  public:
-  World();
+  /// `obstacle_list_refresh`: EnvironmentConfig::obstacle_list_refresh (0: sense every obstacle).
+  explicit World(int obstacle_list_refresh = 0);
   // Holds views into its own obstacle list: not copyable.
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -44,12 +46,19 @@ class World {
 
  private:
   void Sense();
+  /// Rebuilds the nearby-obstacle list from the vessel's position (reference-simulator 6.2).
+  void ListNearbyObstacles();
 
   std::optional<Path> path_;
   VesselState vessel_ = VesselState::Zero();
   std::vector<CircleSpec> static_obstacles_;
   std::vector<MovingObstacle> moving_obstacles_;
   std::vector<const ConvexPolygon*> hulls_;  ///< views of moving_obstacles_' hulls
+  int obstacle_list_refresh_;
+  std::int64_t steps_ = 0;  ///< since Load
+  /// With an obstacle list: the obstacles listed at its last rebuild (hulls keep moving).
+  std::vector<CircleSpec> listed_circles_;
+  std::vector<const ConvexPolygon*> listed_hulls_;
   RangeFinder range_finder_;
   CollisionChecker collision_checker_;
   NavigationState navigation_;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "env/angles.h"
 #include "env/range_finder.h"
@@ -15,26 +14,6 @@ namespace colav {
 namespace {
 
 constexpr double kRadiansToDegrees = 180.0 / M_PI;
-
-double DistanceToSegment(const Eigen::Vector2d& point, const Eigen::Vector2d& a,
-                         const Eigen::Vector2d& b) {
-  const Eigen::Vector2d edge = b - a;
-  const double t = std::clamp((point - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
-  return (point - (a + t * edge)).norm();
-}
-
-// 0 inside the polygon.
-double DistanceToPolygon(const Eigen::Vector2d& point, const ConvexPolygon& polygon) {
-  bool inside = true;
-  double distance = std::numeric_limits<double>::infinity();
-  for (int k = 0; k < polygon.size; ++k) {
-    const Eigen::Vector2d& a = polygon.vertices[k];
-    const Eigen::Vector2d& b = polygon.vertices[(k + 1) % polygon.size];
-    if (polygon.normals[k].dot(point - a) > 0.0) inside = false;
-    distance = std::min(distance, DistanceToSegment(point, a, b));
-  }
-  return inside ? 0.0 : distance;
-}
 
 // Distance from our vessel's centre to each obstacle: the moving vessels, then the static ones.
 std::vector<double> ObstacleDistances(const World& world) {
