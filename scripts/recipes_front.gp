@@ -21,14 +21,14 @@ set multiplot layout 1,2 title "Every recipe on the same 1,000 scenarios: the go
 set ylabel 'progress % (higher is better)'
 set yrange [91:98]
 set object 1 rect from graph 0, first 97 to first 3, graph 1 fc rgb '#b8e0b8' behind
-plot for [i=1:4] data skip 6 using 10:($4 * group(word(groups, i))):11:12:5:6 \
+plot for [i=1:4] data skip 7 using 10:($4 * group(word(groups, i))):11:12:5:6 \
        with xyerrorbars pt (int(word(points, i))) ps 1.3 title title_of(i), \
-     data skip 6 using 10:4:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
+     data skip 7 using 10:4:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
 unset object 1
 set ylabel 'cross-track error m (lower is better)'
 set yrange [15:25]
 set object 2 rect from graph 0, graph 0 to first 3, first 17 fc rgb '#b8e0b8' behind
-plot for [i=1:4] data skip 6 using 10:($7 * group(word(groups, i))):11:12:8:9 \
+plot for [i=1:4] data skip 7 using 10:($7 * group(word(groups, i))):11:12:8:9 \
        with xyerrorbars pt (int(word(points, i))) ps 1.3 title title_of(i), \
-     data skip 6 using 10:7:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
+     data skip 7 using 10:7:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
 unset multiplot
