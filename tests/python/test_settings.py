@@ -18,6 +18,7 @@ OTHER_VALUES = {
     "min_cumulative_reward": -500.0,
     "scan_history": 2,
     "scan_history_interval": 3,
+    "obstacle_list_refresh": 25,
 }
 
 
