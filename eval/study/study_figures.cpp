@@ -57,18 +57,39 @@ std::string DataBlock(const std::string& name, const std::string& rows) {
   return "$" + name + " << EOD\n" + (rows.empty() ? "nan nan nan nan\n" : rows) + "EOD\n";
 }
 
+// The report's models in its order, split into our configurations and the reference agents.
+std::pair<std::vector<std::string>, std::vector<std::string>> OursAndReferences(
+    const StudySpec& spec, const ScenarioSetReport& report) {
+  std::pair<std::vector<std::string>, std::vector<std::string>> split;
+  for (const ModelSummary& model : report.models) {
+    (IsConfig(spec, model.name) ? split.first : split.second).push_back(model.name);
+  }
+  return split;
+}
+
+// Rows "collisions metric collisions-low collisions-high metric-low metric-high name".
+std::string TradeOffRows(const ScenarioSetReport& report, const std::vector<std::string>& names,
+                         const std::string& metric) {
+  std::ostringstream rows;
+  for (const std::string& name : names) {
+    const ModelSummary& model = Summary(report, name);
+    const MetricEstimate& x = model.metrics.at("collision");
+    const MetricEstimate& y = model.metrics.at(metric);
+    rows << x.mean << ' ' << y.mean << ' ' << x.ci.low << ' ' << x.ci.high << ' ' << y.ci.low << ' '
+         << y.ci.high << " \"" << name << "\"\n";
+  }
+  return rows.str();
+}
+
 }  // namespace
 
 void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
                       const ScenarioSetReport& report, const std::string& title,
                       const std::filesystem::path& png) {
-  std::vector<std::string> ours;
-  std::vector<std::string> references;
+  const auto [ours, references] = OursAndReferences(spec, report);
   std::map<std::string, double> row;  // first model on top
   for (std::size_t m = 0; m < report.models.size(); ++m) {
-    const std::string& name = report.models[m].name;
-    (IsConfig(spec, name) ? ours : references).push_back(name);
-    row[name] = static_cast<double>(report.models.size() - m);
+    row[report.models[m].name] = static_cast<double>(report.models.size() - m);
   }
   std::ostringstream script;
   std::string ytics;
@@ -100,6 +121,44 @@ void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
   script << "unset multiplot\n";
   RenderGnuplotPng(script.str(), png, 1100,
                    std::max(500, 160 + 2 * 26 * static_cast<int>(report.models.size())));
+}
+
+void DrawTradeOffFigure(const StudySpec& spec, const ScenarioSetReport& report,
+                        const std::string& title, const std::filesystem::path& png) {
+  const auto [ours, references] = OursAndReferences(spec, report);
+  struct Group {
+    std::string name;
+    const std::vector<std::string>& models;
+    std::string style;
+    std::string title;
+  };
+  const Group groups[] = {
+      {"ours", ours, "pt 7 ps 1.2 " + LineColour(FigureColour(0)), "configuration, 95 % CI"},
+      {"refs", references, "pt 9 ps 1.4 " + LineColour(FigureColour(1)),
+       "reference agent, 95 % CI"}};
+  std::ostringstream script;
+  script << MultiplotLayout(1, 2, GnuplotEnhancedText(title)) << LightGrid()
+         << "set key below horizontal\nset offsets graph 0.05, graph 0.25, graph 0.05, graph "
+            "0.05\nset xlabel "
+         << GnuplotQuote(Metric("collision").label) << "\n";
+  for (const char* metric : {"progress", "cross_track_error"}) {
+    std::string points;
+    std::string labels;
+    for (const Group& group : groups) {
+      if (group.models.empty()) continue;  // a study without reference agents
+      const std::string block = group.name + "_" + metric;
+      script << DataBlock(block, TradeOffRows(report, group.models, metric));
+      points +=
+          fmt::format("{}${} using 1:2:3:4:5:6 with xyerrorbars {} title {}",
+                      points.empty() ? "" : ", ", block, group.style, GnuplotQuote(group.title));
+      labels += fmt::format(
+          ", ${} using 1:2:7 with labels offset 0.6,0.6 left noenhanced font ',9' notitle", block);
+    }
+    script << "set ylabel " << GnuplotQuote(Metric(metric).label) << "\nplot " << points << labels
+           << "\n";
+  }
+  script << "unset multiplot\n";
+  RenderGnuplotPng(script.str(), png, 1200, 560);
 }
 
 std::vector<std::pair<double, std::string>> BetaSweep(const StudySpec& spec) {

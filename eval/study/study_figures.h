@@ -1,6 +1,6 @@
 // The study report's figures (gnuplot PNGs): every model's estimate with its interval and its
-// training seeds, the way rliable draws results of deep RL, and the beta sweep when the study has
-// one.
+// training seeds, the way rliable draws results of deep RL, the trade-off between collisions and
+// the other two metrics, and the beta sweep when the study has one.
 #pragma once
 
 #include <filesystem>
@@ -18,6 +18,13 @@ namespace colav {
 void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
                       const ScenarioSetReport& report, const std::string& title,
                       const std::filesystem::path& png);
+
+/// Collisions against progress and against cross-track error, one panel each: every model at its
+/// two estimates with their 95 % intervals, named, our configurations and the reference agents in
+/// their own colours, so that the trade-off between caution and progress or path shows at a
+/// glance.
+void DrawTradeOffFigure(const StudySpec& spec, const ScenarioSetReport& report,
+                        const std::string& title, const std::filesystem::path& png);
 
 /// (beta, configuration) of the study's beta sweep, beta ascending: the locked configurations
 /// without overrides of one extractor whose VAEs differ in vae.beta (1 when not set), when there

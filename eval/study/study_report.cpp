@@ -227,6 +227,13 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
                    fmt::format("{}: {} scenarios, mean and 95 % CI", spec.name, report.episodes),
                    out / models);
   md << "\n![every model on these scenarios](" << models << ")\n";
+  const std::string trade_off = "figures/" + set + "_trade_off.png";
+  DrawTradeOffFigure(
+      spec, report,
+      fmt::format("{}: collisions against progress and cross-track error, mean and 95 % CI",
+                  spec.name),
+      out / trade_off);
+  md << "\n![collisions against progress and cross-track error](" << trade_off << ")\n";
   const auto sweep = BetaSweep(spec);
   if (set != "study" || sweep.empty()) return;
   const std::string beta = "figures/beta_sweep.png";

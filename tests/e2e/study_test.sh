@@ -42,9 +42,11 @@ grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
 for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
   ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt \
   eval/study/episodes.csv eval/paper/episodes.csv figures/study_models.png figures/paper_models.png \
+  figures/study_trade_off.png figures/paper_trade_off.png \
   figures/training_baseline.png figures/training_shallow_locked.png; do
   [ -s "$WORK/run/$file" ] || fail "missing $file"
 done
+grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
 grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import json, sys
