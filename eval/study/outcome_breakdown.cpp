@@ -23,7 +23,7 @@ OutcomeBreakdown BreakDownOutcomes(const std::vector<const ModelEpisodes*>& seed
       part.share += 100.0 / episodes;
       part.progress_lost += (100.0 - progress[i]) / episodes;
       part.cross_track_error += cte[i] / episodes;
-      if (time_out[i] > 0.0 && collision[i] == 0.0) ++time_outs[i];
+      if (&part == &breakdown.time_out) ++time_outs[i];
     }
   }
   for (const int count : time_outs) {
