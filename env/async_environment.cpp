@@ -275,17 +275,13 @@ AsyncEnvironmentPool::AsyncEnvironmentPool(const EnvironmentConfig& config,
 
 AsyncEnvironmentPool::AsyncEnvironmentPool(std::unique_ptr<BatchedEnvironment> worlds,
                                            int batch_size, int num_threads)
-    : worlds_(std::move(worlds)),
-      batch_size_(CheckedBatchSize(batch_size, worlds_->num_envs())),
+    : OwnedStepResults(CheckedBatchSize(batch_size, worlds->num_envs()),
+                       worlds->observation_size()),
+      worlds_(std::move(worlds)),
+      batch_size_(batch_size),  // checked above
       actions_(static_cast<std::size_t>(worlds_->num_envs()) * kActionSize, 0.0),
       in_flight_(worlds_->num_envs(), false),
-      env_ids_(batch_size_, 0),
-      observations_(static_cast<std::size_t>(batch_size_) * worlds_->observation_size(), 0.0f),
-      final_observations_(observations_.size(), 0.0f),
-      rewards_(batch_size_, 0.0f),
-      terminated_(batch_size_, 0),
-      truncated_(batch_size_, 0),
-      finished_episodes_(batch_size_) {
+      env_ids_(batch_size_, 0) {
   if (num_threads < 1) {
     throw std::invalid_argument("AsyncEnvironmentPool: num_threads " + std::to_string(num_threads) +
                                 " is not >= 1");
@@ -305,11 +301,6 @@ AsyncEnvironmentPool::AsyncEnvironmentPool(std::unique_ptr<BatchedEnvironment> w
 AsyncEnvironmentPool::~AsyncEnvironmentPool() {
   queues_->Stop();
   for (std::thread& worker : workers_) worker.join();
-}
-
-BatchedOutputs AsyncEnvironmentPool::OwnOutputs() {
-  return {observations_.data(), final_observations_.data(), rewards_.data(), terminated_.data(),
-          truncated_.data()};
 }
 
 void AsyncEnvironmentPool::Reset(std::optional<std::uint64_t> seed) {

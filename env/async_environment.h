@@ -30,7 +30,8 @@ struct AsyncBatchOutputs {
 /// step the worlds whose actions are queued, and the caller steps queued worlds too while it waits
 /// in Recv (EnvPool's workers are all extra threads; here a 2-core machine runs 2 threads
 /// stepping, not 2 plus a waiting caller). One thread calls Reset, Send and Recv.
-class AsyncEnvironmentPool {
+/// Its own results (OwnedStepResults) have one row per batch row, world env_ids()[row].
+class AsyncEnvironmentPool : public OwnedStepResults {
  public:
   /// num_envs worlds of the paper's training scenario, seeded as BatchedEnvironment's. Throws
   /// std::invalid_argument unless 1 <= batch_size <= num_envs and num_threads >= 1.
@@ -69,28 +70,14 @@ class AsyncEnvironmentPool {
   /// The same, with the results written to `outputs`.
   void Recv(const AsyncBatchOutputs& outputs);
 
-  // The results of the last Recv that wrote to the pool's own buffers.
+  /// The worlds of the rows of the last Recv that wrote to the pool's own buffers.
   const std::int32_t* env_ids() const { return env_ids_.data(); }
-  /// batch_size x observation_size()
-  const float* observations() const { return observations_.data(); }
-  const float* final_observations() const {
-    return final_observations_.data();
-  }  ///< valid where done
-  const float* rewards() const { return rewards_.data(); }
-  const std::uint8_t* terminated() const { return terminated_.data(); }
-  const std::uint8_t* truncated() const { return truncated_.data(); }
-  /// Per row of the last Recv (whichever outputs it wrote to): the record of the episode that
-  /// ended on that world's step, if one did.
-  const std::vector<std::optional<EpisodeMetrics>>& finished_episodes() const {
-    return finished_episodes_;
-  }
 
  private:
   struct Task;
   class TaskQueues;  // the queues of tasks and of finished worlds the threads share
 
   AsyncEnvironmentPool(std::unique_ptr<BatchedEnvironment> worlds, int batch_size, int num_threads);
-  BatchedOutputs OwnOutputs();
   template <typename Action>
   void SendActions(const Action* actions, const std::int32_t* env_ids, int count);
   /// Marks the worlds as stepping; throws std::invalid_argument (marking none) if one cannot be.
@@ -113,12 +100,6 @@ class AsyncEnvironmentPool {
   bool started_ = false;
 
   std::vector<std::int32_t> env_ids_;
-  std::vector<float> observations_;
-  std::vector<float> final_observations_;
-  std::vector<float> rewards_;
-  std::vector<std::uint8_t> terminated_;
-  std::vector<std::uint8_t> truncated_;
-  std::vector<std::optional<EpisodeMetrics>> finished_episodes_;
 
   std::unique_ptr<TaskQueues> queues_;
   std::vector<std::thread> workers_;  // last: started once everything they use exists

@@ -70,17 +70,12 @@ BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
 BatchedEnvironment::BatchedEnvironment(
     const EnvironmentConfig& config, int num_envs, int num_threads, std::uint64_t seed,
     const std::vector<std::shared_ptr<const ScenarioSource>>& sources)
-    : num_envs_(num_envs),
+    : OwnedStepResults(num_envs, ObservationSize(config)),
+      num_envs_(num_envs),
       observation_size_(ObservationSize(config)),
       seed_(seed),
       histories_(num_envs),
       pool_(std::make_unique<ThreadPool>(std::min(num_threads, num_envs))),
-      observations_(static_cast<std::size_t>(num_envs) * observation_size_, 0.0f),
-      final_observations_(observations_.size(), 0.0f),
-      rewards_(num_envs, 0.0f),
-      terminated_(num_envs, 0),
-      truncated_(num_envs, 0),
-      finished_episodes_(num_envs),
       step_order_(num_envs),
       step_cost_(num_envs, 0) {
   std::iota(step_order_.begin(), step_order_.end(), 0);
@@ -100,11 +95,6 @@ std::uint64_t TrainingEpisodeSeed(std::uint64_t seed, int world, std::uint64_t e
 
 std::uint64_t TestScenarioSeed(std::uint64_t master_seed, std::uint64_t k) {
   return DeriveSeed(master_seed, "test-scenario", k);
-}
-
-BatchedOutputs BatchedEnvironment::OwnOutputs() {
-  return {observations_.data(), final_observations_.data(), rewards_.data(), terminated_.data(),
-          truncated_.data()};
 }
 
 void BatchedEnvironment::Reset(std::optional<std::uint64_t> seed) { Reset(seed, OwnOutputs()); }
@@ -222,7 +212,8 @@ void BatchedEnvironment::ReplayWorld(int world, const WorldHistory& history) {
     throw std::invalid_argument("world " + std::to_string(world) +
                                 ": recorded actions that no step applies");
   }
-  float* observation = &observations_[static_cast<std::size_t>(world) * observation_size_];
+  float* observation =
+      OwnOutputs().observations + static_cast<std::ptrdiff_t>(world) * observation_size_;
   histories_[world].episode = history.episode;
   StartEpisode(world, observation);
   for (std::size_t k = 0; k < actions.size(); k += kActionSize) {

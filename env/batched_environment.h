@@ -9,6 +9,7 @@
 
 #include "env/environment_spec.h"
 #include "env/scenario.h"
+#include "env/step_results.h"
 
 namespace colav {
 
@@ -31,21 +32,12 @@ struct WorldHistory {
   std::vector<double> actions;  ///< kActionSize per step, as the world applied them (clipped)
 };
 
-/// Where a Reset or Step writes its results: num_envs rows each, in memory the caller owns (a
-/// Python binding's numpy arrays, say), so results need not be copied out.
-struct BatchedOutputs {
-  float* observations = nullptr;        ///< num_envs x ObservationSize(config)
-  float* final_observations = nullptr;  ///< num_envs x ObservationSize(config); valid where done
-  float* rewards = nullptr;             ///< num_envs
-  std::uint8_t* terminated = nullptr;   ///< num_envs, 0 or 1
-  std::uint8_t* truncated = nullptr;    ///< num_envs, 0 or 1
-};
-
 /// With more than one thread, an idle worker prepares each world's next episode while the worlds
 /// step (ThreadPool::RunWhenIdle), so a world whose episode ends swaps it in instead of holding up
 /// the step with a reset, which costs about a hundred steps. The prepared episode is the one the
 /// world would reset to, so results do not depend on it.
-class BatchedEnvironment {
+/// Its own results (OwnedStepResults) have one row per world.
+class BatchedEnvironment : public OwnedStepResults {
  public:
   /// num_envs worlds of the paper's training scenario; episode k of world i is generated from
   /// TrainingEpisodeSeed(seed, i, k), so a run is a pure function of `seed`.
@@ -106,28 +98,12 @@ class BatchedEnvironment {
   /// an action outside [-1, 1], an episode that ends during the replay).
   void Restore(const std::vector<WorldHistory>& histories);
 
-  // The results of the last Reset or Step that wrote to the environment's own buffers.
-  /// num_envs x observation_size()
-  const float* observations() const { return observations_.data(); }
-  const float* final_observations() const {
-    return final_observations_.data();
-  }  ///< valid where done
-  const float* rewards() const { return rewards_.data(); }
-  const std::uint8_t* terminated() const { return terminated_.data(); }
-  const std::uint8_t* truncated() const { return truncated_.data(); }
-  /// Per world: the record of the episode that ended on the last Step, if one did (whichever
-  /// outputs that Step wrote to).
-  const std::vector<std::optional<EpisodeMetrics>>& finished_episodes() const {
-    return finished_episodes_;
-  }
-
  private:
   BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
                      std::uint64_t seed,
                      const std::vector<std::shared_ptr<const ScenarioSource>>& sources);
   struct NextEpisode;
 
-  BatchedOutputs OwnOutputs();
   std::uint64_t EpisodeSeed(int world, std::uint64_t episode) const;
   /// Starts world `world`'s episode histories_[world].episode, writing its first observation.
   void StartEpisode(int world, float* observation);
@@ -155,12 +131,6 @@ class BatchedEnvironment {
   std::vector<std::unique_ptr<NextEpisode>> next_episodes_;
   std::unique_ptr<ThreadPool> pool_;               // after what its idle tasks use: destroyed first
   std::function<void(int)> schedule_preparation_;  ///< if set, used instead of pool_
-  std::vector<float> observations_;
-  std::vector<float> final_observations_;
-  std::vector<float> rewards_;
-  std::vector<std::uint8_t> terminated_;
-  std::vector<std::uint8_t> truncated_;
-  std::vector<std::optional<EpisodeMetrics>> finished_episodes_;
   /// The world stepped as loop index i; each thread's share as ThreadPool::ShareStart splits them.
   std::vector<int> step_order_;
   std::vector<std::uint64_t> step_cost_;  ///< of each world's last step, in clock ticks
