@@ -27,6 +27,7 @@ void StepLane(Lane& lane, const float* action) {
   const StepResult result = lane.env->Step(action_values, lane.observation);
   lane.outcome.positions.emplace_back(lane.env->world().vessel().head<2>());
   lane.outcome.cumulative_rewards.push_back(lane.outcome.cumulative_rewards.back() + result.reward);
+  lane.outcome.actions.push_back({action[0], action[1]});
   if (lane.recorder) lane.recorder->Record(lane.env->world(), action_values, result);
   if (result.episode) {
     lane.outcome.metrics = *result.episode;

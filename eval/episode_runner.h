@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <array>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -19,6 +20,9 @@ struct EpisodeOutcome {
   EpisodeMetrics metrics;
   std::vector<Eigen::Vector2d> positions;  ///< vessel position, row 0 = after reset
   std::vector<double> cumulative_rewards;  ///< cumulative reward at each position (0 at reset)
+  /// The policy's actions: actions[k] led from positions[k] to positions[k + 1]. The episode is a
+  /// pure function of its scenario and these, so they replay it (the collision analysis).
+  std::vector<std::array<float, kActionSize>> actions;
   std::optional<Replay> replay;  ///< every step, labelled by the policy's name, if recorded
 };
 

@@ -194,14 +194,6 @@ bool SomeModelCollided(const std::vector<std::vector<EpisodeOutcome>>& outcomes,
                      [&](const auto& model) { return model[episode].metrics.collision; });
 }
 
-// The actions of a one-run replay: actions[k] led from step k to step k + 1.
-std::vector<std::array<float, kActionSize>> RecordedActions(const Replay& replay) {
-  const std::vector<ReplayStep>& steps = replay.runs.front().steps;
-  std::vector<std::array<float, kActionSize>> actions;
-  for (std::size_t k = 1; k < steps.size(); ++k) actions.push_back(steps[k].action);
-  return actions;
-}
-
 // Indices of the episodes to replay: every scenario file; of the test scenarios, the first
 // `first` and then the first `collided` others in which some model collided.
 std::vector<int> ReplayedEpisodes(const ReplayChoice& choice, bool on_files,
@@ -238,26 +230,20 @@ void WriteReplays(std::vector<Policy>& policies, const std::vector<EvaluationEpi
   spdlog::info("wrote {} replay page(s) to {}", replayed.size(), (out / "replays").string());
 }
 
-// OUT/collisions.csv and OUT/collisions.md: every collision of every model, its episode re-run with
-// recording (the same run, as for replays), the obstacle named and avoidance searched.
-void AnalyseCollisions(std::vector<Policy>& policies,
+// OUT/collisions.csv and OUT/collisions.md: every collision of every model, replayed from the
+// actions of its evaluation run, the obstacle named and avoidance searched.
+void AnalyseCollisions(const std::vector<Policy>& policies,
                        const std::vector<EvaluationEpisode>& episodes,
-                       const std::vector<std::vector<EpisodeOutcome>>& outcomes,
-                       const EnvironmentConfig& env, int threads,
+                       const std::vector<std::vector<EpisodeOutcome>>& outcomes, int threads,
                        const std::filesystem::path& out) {
-  std::vector<EvaluationEpisode> collided;
-  for (std::size_t e = 0; e < episodes.size(); ++e) {
-    if (SomeModelCollided(outcomes, e)) collided.push_back(episodes[e]);
-  }
-  const auto runs = RunEpisodes(policies, collided, env, threads, {}, /*record_replays=*/true);
   struct Job {
     std::size_t model;
     std::size_t episode;
   };
   std::vector<Job> jobs;
-  for (std::size_t m = 0; m < runs.size(); ++m) {
-    for (std::size_t e = 0; e < collided.size(); ++e) {
-      if (runs[m][e].metrics.collision) jobs.push_back({m, e});
+  for (std::size_t m = 0; m < outcomes.size(); ++m) {
+    for (std::size_t e = 0; e < episodes.size(); ++e) {
+      if (outcomes[m][e].metrics.collision) jobs.push_back({m, e});
     }
   }
   std::vector<std::optional<CollisionAnalysis>> analyses(jobs.size());
@@ -267,9 +253,8 @@ void AnalyseCollisions(std::vector<Policy>& policies,
   pool.ParallelFor(
       static_cast<int>(jobs.size()),
       [&](int j) {
-        analyses[j] =
-            AnalyseCollision(collided[jobs[j].episode].scenario,
-                             RecordedActions(*runs[jobs[j].model][jobs[j].episode].replay));
+        analyses[j] = AnalyseCollision(episodes[jobs[j].episode].scenario,
+                                       outcomes[jobs[j].model][jobs[j].episode].actions);
         ++done;
       },
       [&] { progress.Update(done); });
@@ -279,11 +264,11 @@ void AnalyseCollisions(std::vector<Policy>& policies,
   for (std::size_t j = 0; j < jobs.size(); ++j) {
     const std::string& model = policies[jobs[j].model].name();
     if (!analyses[j]) {
-      throw std::runtime_error(model + " on " + collided[jobs[j].episode].name +
+      throw std::runtime_error(model + " on " + episodes[jobs[j].episode].name +
                                ": its recorded actions do not collide when replayed");
     }
     counts[jobs[j].model].collisions.push_back(*analyses[j]);
-    csv += CollisionCsvRow(model, collided[jobs[j].episode].name, *analyses[j]);
+    csv += CollisionCsvRow(model, episodes[jobs[j].episode].name, *analyses[j]);
   }
   for (std::size_t m = 0; m < policies.size(); ++m) {
     counts[m].model = policies[m].name();
@@ -400,7 +385,7 @@ int Evaluate(int argc, char** argv) {
                  options.env, threads, folder.path());
   }
   if (analyse_collisions) {
-    AnalyseCollisions(policies, episodes, outcomes, options.env, threads, folder.path());
+    AnalyseCollisions(policies, episodes, outcomes, threads, folder.path());
   }
   if (on_files) {
     PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());

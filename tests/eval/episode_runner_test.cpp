@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include "env/environment.h"
 #include "env/path.h"
+#include "env/scenario_file.h"
 #include "eval/episode_table.h"
 #include "src/seeding.h"
 #include "tests/eval/test_policies.h"
@@ -95,6 +97,26 @@ TEST_F(EpisodeRunnerTest, RecordsTheTrackAndTheCumulativeReward) {
     EXPECT_GT(outcome.metrics.path_length, 250.0);
   }
   EXPECT_EQ(outcomes[0][0].positions.front(), episodes[0].scenario.vessel_position);
+}
+
+// The collision analysis replays an episode from its scenario and recorded actions alone.
+TEST_F(EpisodeRunnerTest, RecordedActionsReplayTheEpisode) {
+  std::vector<Policy> policies = {Reactive(1, "a")};
+  const auto episodes = TestEpisodes(3, 2);
+  const auto outcomes = RunEpisodes(policies, episodes, ShortTestEpisodes(), 2);
+  for (std::size_t e = 0; e < episodes.size(); ++e) {
+    const EpisodeOutcome& outcome = outcomes[0][e];
+    ASSERT_EQ(outcome.actions.size(), static_cast<std::size_t>(outcome.metrics.steps));
+    Environment env(ShortTestEpisodes(),
+                    std::make_shared<FixedScenarioSource>(episodes[e].scenario));
+    std::vector<float> observation(ObservationSize(ShortTestEpisodes()));
+    env.Reset(episodes[e].seed.value_or(0), observation.data());
+    for (std::size_t k = 0; k < outcome.actions.size(); ++k) {
+      const double action[kActionSize] = {outcome.actions[k][0], outcome.actions[k][1]};
+      env.Step(action, observation.data());
+      ASSERT_EQ(env.world().vessel().head<2>(), outcome.positions[k + 1]) << "step " << k;
+    }
+  }
 }
 
 TEST_F(EpisodeRunnerTest, PerturbedStartsAreReproducibleAndNearThePathStart) {
