@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "src/log_gamma.h"
+
 namespace colav {
 
 std::uint64_t UniformIndex(Rng& rng, std::uint64_t n) {
@@ -48,7 +50,7 @@ std::int64_t Poisson(Rng& rng, double lambda) {
     if (us >= 0.07 && v <= vr) return static_cast<std::int64_t>(k);
     if (k < 0 || (us < 0.013 && v > us)) continue;
     if (std::log(v) + std::log(invalpha) - std::log(a / (us * us) + b) <=
-        -lambda + k * loglam - std::lgamma(k + 1)) {
+        -lambda + k * loglam - LogGamma(k + 1)) {
       return static_cast<std::int64_t>(k);
     }
   }

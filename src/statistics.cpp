@@ -4,6 +4,8 @@
 #include <numeric>
 #include <stdexcept>
 
+#include "src/log_gamma.h"
+
 namespace colav {
 namespace {
 
@@ -46,7 +48,7 @@ double RegularisedIncompleteBeta(double a, double b, double x) {
   if (x <= 0.0) return 0.0;
   if (x >= 1.0) return 1.0;
   const double log_front =
-      std::lgamma(a + b) - std::lgamma(a) - std::lgamma(b) + a * std::log(x) + b * std::log1p(-x);
+      LogGamma(a + b) - LogGamma(a) - LogGamma(b) + a * std::log(x) + b * std::log1p(-x);
   const double front = std::exp(log_front);
   if (x < (a + 1.0) / (a + b + 2.0)) return front * IncompleteBetaFraction(a, b, x) / a;
   return 1.0 - front * IncompleteBetaFraction(b, a, 1.0 - x) / b;
