@@ -2,7 +2,10 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <charconv>
+#include <cstdint>
 #include <limits>
+#include <optional>
 #include <type_traits>
 #include <utility>
 
@@ -11,14 +14,15 @@
 namespace colav {
 namespace {
 
-// The range of an integer field as int64: an unsigned field's values above 2^63 - 1 are not needed
-// (seeds stay below, as the configuration keys' do).
+constexpr auto kInt64Max = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+
+// The range of an integer field as int64, for the int64 reading of its text; an unsigned field's
+// values above 2^63 - 1 are read apart (ParseUnsignedDigits).
 template <typename Number>
 std::pair<std::int64_t, std::int64_t> WholeBounds(Number min, Number max) {
   if constexpr (std::is_unsigned_v<Number>) {
-    constexpr auto kHighest = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
     return {static_cast<std::int64_t>(min),
-            static_cast<std::int64_t>(std::min<std::uint64_t>(max, kHighest))};
+            static_cast<std::int64_t>(std::min<std::uint64_t>(max, kInt64Max))};
   } else {
     return {min, max};
   }
@@ -34,12 +38,32 @@ std::string RangeOf(Number min, Number max) {
   }
 }
 
+// Digits (after an optional '+') as a uint64. The seeds of training and test worlds (DeriveSeed,
+// the seed column of episodes.csv) are as often above 2^63 - 1 as below, and simulate
+// --training-seed takes them as they are printed.
+std::optional<std::uint64_t> ParseUnsignedDigits(const std::string& text) {
+  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;
+  const char* end = text.data() + text.size();
+  std::uint64_t value = 0;
+  const auto result = std::from_chars(text.data() + start, end, value);
+  if (result.ec != std::errc() || result.ptr != end) return std::nullopt;
+  return value;
+}
+
 // Checks the text and rewrites it as CLI11 reads it: "3e6" becomes "3000000" for an integer.
 template <typename Number>
 std::string CheckAndNormalise(std::string& text, Number min, Number max) {
   if constexpr (std::is_floating_point_v<Number>) {
     return NumberProblem(text, min, max);
   } else {
+    if constexpr (std::is_unsigned_v<Number>) {
+      const std::optional<std::uint64_t> digits = ParseUnsignedDigits(text);
+      if (digits && *digits > kInt64Max) {
+        if (*digits < min || *digits > max) return text + " is out of range " + RangeOf(min, max);
+        text = std::to_string(*digits);
+        return "";
+      }
+    }
     const auto [low, high] = WholeBounds(min, max);
     std::string problem = WholeNumberProblem(text, low, high);
     if (problem.empty()) text = std::to_string(*ParseWholeNumber(text));

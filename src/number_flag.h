@@ -16,7 +16,8 @@ namespace colav {
 
 /// Adds `flag VALUE` read into `value`; a value outside [min, max], or not a (whole) number, fails
 /// the parse with one line: "--envs: 0 is out of range [1, 4096]", "--seconds: expects a
-/// number, got 'nan'". Defined for double, int, std::int64_t and std::uint64_t.
+/// number, got 'nan'". Defined for double, int, std::int64_t and std::uint64_t; a std::uint64_t
+/// flag reads its whole range (seeds above 2^63 - 1 included).
 template <typename Number>
 CLI::Option* AddNumberFlag(CLI::App& app, const std::string& flag, Number& value,
                            const std::string& doc, Number min, Number max);

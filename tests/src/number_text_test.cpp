@@ -72,8 +72,13 @@ TEST(NumberFlagTest, ReadsValidValuesAndNamesTheFlagOtherwise) {
             "--envs: 100000000 is out of range [1, 1024]");
   EXPECT_EQ(ParseFailure({"--seed", "-3"}, seconds, envs, seed),
             "--seed: -3 is out of range [0, inf)");
-  EXPECT_EQ(ParseFailure({"--seed", "18446744073709551615"}, seconds, envs, seed),
-            "--seed: expects an integer, got '18446744073709551615'");
+  // A test world's seed is as often above 2^63 - 1 as below (simulate --training-seed).
+  EXPECT_EQ(ParseFailure({"--seed", "15812142224346123324"}, seconds, envs, seed), "");
+  EXPECT_EQ(seed, 15812142224346123324U);
+  EXPECT_EQ(ParseFailure({"--seed", "+18446744073709551615"}, seconds, envs, seed), "");
+  EXPECT_EQ(seed, std::numeric_limits<std::uint64_t>::max());
+  EXPECT_EQ(ParseFailure({"--seed", "18446744073709551616"}, seconds, envs, seed),
+            "--seed: expects an integer, got '18446744073709551616'");
 }
 
 }  // namespace
