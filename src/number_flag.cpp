@@ -2,7 +2,6 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <charconv>
 #include <cstdint>
 #include <limits>
 #include <optional>
@@ -36,18 +35,6 @@ std::string RangeOf(Number min, Number max) {
     const auto [low, high] = WholeBounds(min, max);
     return RangeText(low, high);
   }
-}
-
-// Digits (after an optional '+') as a uint64. The seeds of training and test worlds (DeriveSeed,
-// the seed column of episodes.csv) are as often above 2^63 - 1 as below, and simulate
-// --training-seed takes them as they are printed.
-std::optional<std::uint64_t> ParseUnsignedDigits(const std::string& text) {
-  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;
-  const char* end = text.data() + text.size();
-  std::uint64_t value = 0;
-  const auto result = std::from_chars(text.data() + start, end, value);
-  if (result.ec != std::errc() || result.ptr != end) return std::nullopt;
-  return value;
 }
 
 // Checks the text and rewrites it as CLI11 reads it: "3e6" becomes "3000000" for an integer.

@@ -25,23 +25,32 @@ std::string Problem(const std::string& text, const std::optional<Number>& value,
   return "";
 }
 
-}  // namespace
-
-std::optional<double> ParseFiniteNumber(const std::string& text) {
-  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;  // from_chars rejects '+'
+// `text` as a Number when std::from_chars reads all of it, after an optional '+' (which from_chars
+// rejects).
+template <typename Number>
+std::optional<Number> ReadAll(const std::string& text) {
+  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;
   const char* end = text.data() + text.size();
-  double value = 0.0;
+  Number value{};
   const auto result = std::from_chars(text.data() + start, end, value);
-  if (result.ec != std::errc() || result.ptr != end || !std::isfinite(value)) return std::nullopt;
+  if (result.ec != std::errc() || result.ptr != end) return std::nullopt;
   return value;
 }
 
+}  // namespace
+
+std::optional<double> ParseFiniteNumber(const std::string& text) {
+  const std::optional<double> value = ReadAll<double>(text);
+  if (!value || !std::isfinite(*value)) return std::nullopt;
+  return value;
+}
+
+std::optional<std::uint64_t> ParseUnsignedDigits(const std::string& text) {
+  return ReadAll<std::uint64_t>(text);
+}
+
 std::optional<std::int64_t> ParseWholeNumber(const std::string& text) {
-  const std::size_t start = !text.empty() && text[0] == '+' ? 1 : 0;
-  const char* end = text.data() + text.size();
-  std::int64_t value = 0;
-  const auto result = std::from_chars(text.data() + start, end, value);
-  if (result.ec == std::errc() && result.ptr == end) return value;
+  if (const std::optional<std::int64_t> value = ReadAll<std::int64_t>(text)) return value;
   constexpr double kExactLimit = 9007199254740992.0;  // 2^53
   const std::optional<double> real = ParseFiniteNumber(text);
   if (!real || std::floor(*real) != *real || std::fabs(*real) > kExactLimit) return std::nullopt;

@@ -17,6 +17,11 @@ std::optional<double> ParseFiniteNumber(const std::string& text);
 /// that a double represents exactly; nullopt otherwise ("3.5", "1e20", "abc").
 std::optional<std::int64_t> ParseWholeNumber(const std::string& text);
 
+/// Digits only (after an optional '+') as a uint64, over its whole range: the seeds of training
+/// and test worlds (DeriveSeed, the seed column of episodes.csv) are as often above 2^63 - 1 as
+/// below; nullopt otherwise ("-3", "3e6", "18446744073709551616").
+std::optional<std::uint64_t> ParseUnsignedDigits(const std::string& text);
+
 /// "[1, 1000]", "[0, inf)", "(-inf, 5]": a range with unbounded ends, declared as infinities for
 /// doubles and the extreme values for integers, shown as infinite.
 std::string RangeText(double min, double max);

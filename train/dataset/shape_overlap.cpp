@@ -7,21 +7,6 @@
 namespace colav {
 namespace {
 
-// Squared distance from p to the segment [a, b].
-double SquaredDistanceToSegment(const Eigen::Vector2d& p, const Eigen::Vector2d& a,
-                                const Eigen::Vector2d& b) {
-  const Eigen::Vector2d edge = b - a;
-  const double t = std::clamp((p - a).dot(edge) / edge.squaredNorm(), 0.0, 1.0);
-  return (a + t * edge - p).squaredNorm();
-}
-
-bool ContainsPoint(const ConvexPolygon& polygon, const Eigen::Vector2d& point) {
-  for (int k = 0; k < polygon.size; ++k) {
-    if (polygon.normals[k].dot(point - polygon.vertices[k]) > 0.0) return false;
-  }
-  return true;
-}
-
 // The interval the polygon's vertices cover along `axis`.
 std::pair<double, double> Project(const ConvexPolygon& polygon, const Eigen::Vector2d& axis) {
   double low = std::numeric_limits<double>::infinity();
@@ -52,14 +37,7 @@ bool CirclesOverlap(const CircleSpec& a, const CircleSpec& b) {
 }
 
 bool CirclePolygonOverlap(const CircleSpec& circle, const ConvexPolygon& polygon) {
-  if (ContainsPoint(polygon, circle.center)) return true;
-  const double radius_squared = circle.radius * circle.radius;
-  for (int k = 0; k < polygon.size; ++k) {
-    const Eigen::Vector2d& a = polygon.vertices[k];
-    const Eigen::Vector2d& b = polygon.vertices[(k + 1) % polygon.size];
-    if (SquaredDistanceToSegment(circle.center, a, b) <= radius_squared) return true;
-  }
-  return false;
+  return DistanceToPolygon(circle.center, polygon) <= circle.radius;
 }
 
 bool PolygonsOverlap(const ConvexPolygon& a, const ConvexPolygon& b) {
