@@ -41,9 +41,10 @@ std::uint64_t Ticks() {
 #endif
 }
 
-std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(int num_envs) {
+std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(
+    int num_envs, const TrainingScenarioConfig& worlds) {
   return std::vector<std::shared_ptr<const ScenarioSource>>(
-      num_envs, std::make_shared<TrainingScenarioGenerator>());
+      num_envs, std::make_shared<TrainingScenarioGenerator>(worlds));
 }
 
 std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
@@ -59,8 +60,10 @@ std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
 }  // namespace
 
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_envs,
-                                       int num_threads, std::uint64_t seed)
-    : BatchedEnvironment(config, num_envs, num_threads, seed, SharedTrainingSource(num_envs)) {}
+                                       int num_threads, std::uint64_t seed,
+                                       const TrainingScenarioConfig& worlds)
+    : BatchedEnvironment(config, num_envs, num_threads, seed,
+                         SharedTrainingSource(num_envs, worlds)) {}
 
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
                                        const std::vector<Scenario>& scenarios, int num_threads)

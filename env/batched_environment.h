@@ -10,6 +10,7 @@
 #include "env/environment_spec.h"
 #include "env/scenario.h"
 #include "env/step_results.h"
+#include "env/training_scenario.h"
 
 namespace colav {
 
@@ -39,10 +40,11 @@ struct WorldHistory {
 /// Its own results (OwnedStepResults) have one row per world.
 class BatchedEnvironment : public OwnedStepResults {
  public:
-  /// num_envs worlds of the paper's training scenario; episode k of world i is generated from
-  /// TrainingEpisodeSeed(seed, i, k), so a run is a pure function of `seed`.
+  /// num_envs worlds of the paper's training scenario (or of `worlds`' variant of it); episode k
+  /// of world i is generated from TrainingEpisodeSeed(seed, i, k), so a run is a pure function of
+  /// `seed` and `worlds`.
   BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
-                     std::uint64_t seed);
+                     std::uint64_t seed, const TrainingScenarioConfig& worlds = {});
   /// One world per scenario, each replaying its scenario in every episode (scenario files, the
   /// evaluation's test worlds).
   BatchedEnvironment(const EnvironmentConfig& config, const std::vector<Scenario>& scenarios,

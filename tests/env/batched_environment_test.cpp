@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "env/environment.h"
+
 namespace colav {
 namespace {
 
@@ -111,6 +113,29 @@ TEST(BatchedEnvironment, ResetWithASeedStartsOverWithoutMovesOn) {
   envs.Reset(5);
   EXPECT_EQ(first, std::vector<float>(envs.observations(), envs.observations() + kObservationSize));
   EXPECT_NE(first, next);
+}
+
+// The reset observation of world `world`'s first episode, generated alone.
+std::vector<float> FirstObservation(const TrainingScenarioConfig& worlds, std::uint64_t seed,
+                                    int world) {
+  Environment env(EnvironmentConfig{}, std::make_shared<TrainingScenarioGenerator>(worlds));
+  std::vector<float> observation(kObservationSize);
+  env.Reset(TrainingEpisodeSeed(seed, world, 0), observation.data());
+  return observation;
+}
+
+TEST(BatchedEnvironment, TrainsInTheWorldsItIsGiven) {
+  TrainingScenarioConfig crowded;
+  crowded.num_static = 30;
+  crowded.static_displacement_sd = 20.0;
+  BatchedEnvironment envs(EnvironmentConfig{}, 2, 1, 7, crowded);
+  envs.Reset();
+  for (int world = 0; world < 2; ++world) {
+    const std::vector<float> row(envs.observations() + world * kObservationSize,
+                                 envs.observations() + (world + 1) * kObservationSize);
+    EXPECT_EQ(row, FirstObservation(crowded, 7, world));
+    EXPECT_NE(row, FirstObservation({}, 7, world));
+  }
 }
 
 }  // namespace

@@ -176,6 +176,24 @@ TEST(TrainingScenario, PaperCountsAndPlacementRules) {
   EXPECT_EQ(layouts.size(), 2U);
 }
 
+TEST(TrainingScenario, CountsAndSpreadsAreConfigurable) {
+  TrainingScenarioConfig config;
+  config.num_moving = 0;
+  config.num_static = 25;
+  config.static_displacement_sd = 10.0;
+  const TrainingScenarioGenerator generator(config);
+  for (std::uint64_t seed = 0; seed < 10; ++seed) {
+    const Scenario s = generator.Make(seed);
+    EXPECT_TRUE(s.dynamic_obstacles.empty());
+    ASSERT_EQ(s.static_obstacles.size(), 25U);
+    const Path path(s.waypoints);
+    for (const CircleSpec& c : s.static_obstacles) {
+      // Placed at most 6 standard deviations off the path (the default spread is 250 m).
+      EXPECT_LT((path.Point(path.ClosestArclength(c.center)) - c.center).norm(), 60.0);
+    }
+  }
+}
+
 TEST(TrainingScenario, SpeedTableInverseCdf) {
   EXPECT_DOUBLE_EQ(MovingObstacleSpeed(0.0), 5.973753401783561678e-02);
   EXPECT_NEAR(MovingObstacleSpeed(0.999999999), 1.987489866097870594, 1e-12);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "env/environment_config.h"
+#include "env/training_scenario_config.h"
 #include "src/error.h"
 #include "src/seeding.h"
 
@@ -245,6 +246,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "train.env_threads", [](Run & o) -> auto& { return o.ppo.env_threads; },
           "threads stepping the worlds (0: one per core)", 0, 256)
       .Include(EnvironmentBinding(), &Run::env)
+      .Include(TrainingScenarioBinding(), &Run::worlds)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
       .Then(DeriveModelSettings);

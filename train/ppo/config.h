@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "env/environment_spec.h"
+#include "env/training_scenario.h"
 #include "models/actor_critic.h"
 #include "models/adam.h"
 #include "src/options_binding.h"
@@ -58,10 +59,12 @@ struct PpoRunOptions {
   /// paper recipe feeds the environment's log closeness to an encoder trained on the paper's
   /// linear closeness, as the authors' code did, so linear is expected by default.
   std::optional<ClosenessTransform> encoder_closeness = ClosenessTransform::kLinear;
+  /// The worlds the agent trains in; the paper's by default. Evaluation always uses the paper's.
+  TrainingScenarioConfig worlds;
 };
 
-/// The ppo.*, policy.*, extractor.*, train.* and env.* keys. Reading checks that a VAE extractor
-/// has an encoder file and derives the model's seed from train.seed.
+/// The ppo.*, policy.*, extractor.*, train.*, env.* and world.* keys. Reading checks that a VAE
+/// extractor has an encoder file and derives the model's seed from train.seed.
 OptionsBinding<PpoRunOptions> PpoRunBinding();
 
 }  // namespace colav

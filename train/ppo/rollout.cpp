@@ -15,11 +15,12 @@ bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeou
   return truncated && !terminated && !timeouts_terminal;
 }
 
-RolloutCollector::RolloutCollector(const EnvironmentConfig& config, int n_envs, int threads,
+RolloutCollector::RolloutCollector(const EnvironmentConfig& config,
+                                   const TrainingScenarioConfig& worlds, int n_envs, int threads,
                                    std::uint64_t env_seed, const RolloutRules& rules)
     : env_seed_(env_seed),
       rules_(rules),
-      env_(config, n_envs, threads, env_seed),
+      env_(config, n_envs, threads, env_seed, worlds),
       reward_scaler_(n_envs, rules.gamma),
       normalized_observations_(rules.normalize_navigation
                                    ? static_cast<std::size_t>(n_envs) * env_.observation_size()

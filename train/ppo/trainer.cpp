@@ -67,7 +67,8 @@ class PpoTrainer {
         rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
                               : RolloutStart{}),
         counters_(rollout_start_.counters),
-        collector_(options.env, options_.n_envs, ThreadCountOrAllCores(options_.env_threads),
+        collector_(options.env, options.worlds, options_.n_envs,
+                   ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
                    {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,
                     options_.normalize_navigation}),

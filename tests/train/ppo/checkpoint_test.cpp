@@ -193,10 +193,11 @@ TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
 struct RunsWithOption {
   std::filesystem::path whole, pieces, plain;
 };
-RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::path& directory) {
+RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::path& directory,
+                               const std::string& value = "true") {
   const auto with_key = [&](std::int64_t total_steps) {
     Config config = ShortEpisodes(total_steps);
-    config.Set(key, "true", "test");
+    config.Set(key, value, "test");
     return config;
   };
   const RunsWithOption runs{directory / "whole", directory / "pieces", directory / "plain"};
@@ -235,6 +236,14 @@ TEST(PpoCheckpointTest, ExtendedRunWithNormalisedNavigationEqualsTheUninterrupte
 TEST(PpoCheckpointTest, ExtendedRunWithSquashedActionsEqualsTheUninterruptedRun) {
   testing_util::TemporaryFolder directory;
   const RunsWithOption runs = TrainWithOption("policy.squash_actions", directory.path());
+  EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
+}
+
+// A resume rebuilds the worlds from the run's own training scenario: crowded ones, here.
+TEST(PpoCheckpointTest, ExtendedRunInCrowdedWorldsEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOption("world.num_static", directory.path(), "40");
+  // The range-finder sees the extra circles, and the reward's closeness penalty with it.
   EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
 }
 

@@ -1,0 +1,32 @@
+#include "env/training_scenario_config.h"
+
+namespace colav {
+namespace {
+
+// More obstacles than this per world is a typo (the paper's worlds hold 17 and 11).
+constexpr int kMaxObstacles = 200;
+// Lateral spreads beyond this put every obstacle out of the range-finder's 150 m.
+constexpr double kMaxDisplacementSd = 5000.0;
+
+}  // namespace
+
+OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding() {
+  using World = TrainingScenarioConfig;
+  OptionsBinding<World> binding;
+  binding
+      .Number("world.num_moving", &World::num_moving,
+              "moving vessels per training world (the test scenarios keep the paper's 17)", 0,
+              kMaxObstacles)
+      .Number("world.moving_displacement_sd", &World::moving_displacement_sd,
+              "standard deviation (m) of a vessel's lateral offset from the path (training)", 0.0,
+              kMaxDisplacementSd)
+      .Number("world.num_static", &World::num_static,
+              "static circles per training world (the test scenarios keep the paper's 11)", 0,
+              kMaxObstacles)
+      .Number("world.static_displacement_sd", &World::static_displacement_sd,
+              "standard deviation (m) of a circle's lateral offset from the path (training)", 0.0,
+              kMaxDisplacementSd);
+  return binding;
+}
+
+}  // namespace colav
