@@ -40,6 +40,9 @@ struct EvaluateOptions {
   int threads = 0;  ///< 0: all cores
   int trajectory_scenarios = 3;
   int trajectory_starts = 5;
+  /// Scenario files drawn, the first ones: a figure per file and model costs about 40 ms, so a
+  /// thousand generated files would spend minutes drawing.
+  int scenario_file_figures = 100;
 };
 
 OptionsBinding<EvaluateOptions> EvaluateBinding() {
@@ -59,7 +62,10 @@ OptionsBinding<EvaluateOptions> EvaluateBinding() {
               "test scenarios drawn as trajectory figures (the first ones)", 0, 100000)
       .Number("eval.trajectory_starts", &Options::trajectory_starts,
               "runs per model in each trajectory figure: the test start plus perturbed starts", 1,
-              100);
+              100)
+      .Number("eval.scenario_file_figures", &Options::scenario_file_figures,
+              "with --scenario: files drawn as trajectory figures, one per model (the first ones)",
+              0, 100000);
   return binding;
 }
 
@@ -133,12 +139,13 @@ std::vector<std::vector<EpisodeMetrics>> MetricsOf(
   return metrics;
 }
 
-// One picture per scenario file and model, of the single run.
+// One picture per model of the single run in each of the first `pictured` scenario files.
 void PlotScenarioFileRuns(const std::vector<Policy>& policies,
                           const std::vector<EvaluationEpisode>& episodes,
-                          const std::vector<std::vector<EpisodeOutcome>>& outcomes,
+                          const std::vector<std::vector<EpisodeOutcome>>& outcomes, int pictured,
                           const std::filesystem::path& out) {
-  for (std::size_t e = 0; e < episodes.size(); ++e) {
+  const std::size_t files = std::min<std::size_t>(pictured, episodes.size());
+  for (std::size_t e = 0; e < files; ++e) {
     for (std::size_t m = 0; m < policies.size(); ++m) {
       PlotTrajectories(episodes[e].scenario, episodes[e].name, policies[m].name(), {outcomes[m][e]},
                        {policies[m].name()},
@@ -331,6 +338,7 @@ int Evaluate(int argc, char** argv) {
   config_flags.AddFlag("--seed", "eval.seed");
   config_flags.AddFlag("--threads", "eval.threads");
   config_flags.AddFlag("--trajectories", "eval.trajectory_scenarios");
+  config_flags.AddFlag("--file-figures", "eval.scenario_file_figures");
   config_flags.AddFlag("--trajectory-starts", "eval.trajectory_starts");
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
@@ -388,7 +396,8 @@ int Evaluate(int argc, char** argv) {
     AnalyseCollisions(policies, episodes, outcomes, threads, folder.path());
   }
   if (on_files) {
-    PlotScenarioFileRuns(policies, episodes, outcomes, folder.path());
+    PlotScenarioFileRuns(policies, episodes, outcomes, options.scenario_file_figures,
+                         folder.path());
   } else {
     PlotTestTrajectories(policies, episodes, outcomes, options, threads, folder.path());
   }

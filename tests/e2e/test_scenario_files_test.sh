@@ -3,7 +3,8 @@
 # kind of their obstacles. Each file is named as its test scenario, keeps exactly the obstacles
 # asked for, and starts the vessel exactly where the test scenario does (simulate's first two
 # trace rows: the same state and path errors); with all obstacles the whole trace is the test
-# scenario's, and without any nothing is in range.
+# scenario's, and without any nothing is in range. evaluate on the files draws one figure per
+# model for each file, or for the first --file-figures of them.
 #
 # usage: test_scenario_files_test.sh BIN_DIR WORK_DIR SOURCE_DIR PYTHON_MODULE_DIR
 set -euo pipefail
@@ -43,4 +44,25 @@ done
 seen=$(awk -F, 'NR > 1 { for (i = 16; i <= NF; ++i) if ($i != 150) n++ } END { print n + 0 }' \
   "$work/bare.csv")
 ((seen == 0)) || fail "bare-000: $seen ranges under 150 m"
-echo "test scenario files: 3 files of each kind, as their test scenarios"
+
+# TorchScript compiles from source files, not from standard input.
+cat >"$work/full_thrust.py" <<'PY'
+import sys
+import torch
+
+class FullThrust(torch.nn.Module):
+    def forward(self, obs: torch.Tensor) -> torch.Tensor:
+        return torch.tensor([1.0, 0.0]).expand(obs.shape[0], 2).contiguous()
+
+torch.jit.script(FullThrust()).save(sys.argv[1])
+PY
+/usr/bin/python3 "$work/full_thrust.py" "$work/full_thrust.pt"
+printf 'env:\n  closeness: linear\n' >"$work/full_thrust.pt.yaml"
+for cap in "" 2; do
+  "$bin/evaluate" --policy "$work/full_thrust.pt" --policy "$work/full_thrust.pt" --name a \
+    --name b --scenario "$work"/none/bare-00{0,1,2}.yaml ${cap:+--file-figures $cap} \
+    --out "$work/evaluation$cap" >/dev/null 2>&1 || fail "evaluate on the bare files failed"
+  drawn=$(find "$work/evaluation$cap/figures" -name '*.png' | wc -l)
+  ((drawn == 2 * ${cap:-3})) || fail "--file-figures '${cap}': $drawn figures for 2 models"
+done
+echo "test scenario files: 3 files of each kind, as their test scenarios; figures capped"
