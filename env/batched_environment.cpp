@@ -41,10 +41,19 @@ std::uint64_t Ticks() {
 #endif
 }
 
-std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(
-    int num_envs, const TrainingScenarioConfig& worlds) {
+std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(int num_envs) {
   return std::vector<std::shared_ptr<const ScenarioSource>>(
-      num_envs, std::make_shared<TrainingScenarioGenerator>(worlds));
+      num_envs, std::make_shared<TrainingScenarioGenerator>());
+}
+
+std::vector<std::shared_ptr<const ScenarioSource>> TrainingSources(
+    const std::vector<TrainingScenarioConfig>& world_scenarios) {
+  std::vector<std::shared_ptr<const ScenarioSource>> sources;
+  sources.reserve(world_scenarios.size());
+  for (const TrainingScenarioConfig& scenario : world_scenarios) {
+    sources.push_back(std::make_shared<TrainingScenarioGenerator>(scenario));
+  }
+  return sources;
 }
 
 std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
@@ -60,10 +69,14 @@ std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
 }  // namespace
 
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config, int num_envs,
-                                       int num_threads, std::uint64_t seed,
-                                       const TrainingScenarioConfig& worlds)
-    : BatchedEnvironment(config, num_envs, num_threads, seed,
-                         SharedTrainingSource(num_envs, worlds)) {}
+                                       int num_threads, std::uint64_t seed)
+    : BatchedEnvironment(config, num_envs, num_threads, seed, SharedTrainingSource(num_envs)) {}
+
+BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
+                                       const std::vector<TrainingScenarioConfig>& world_scenarios,
+                                       int num_threads, std::uint64_t seed)
+    : BatchedEnvironment(config, static_cast<int>(world_scenarios.size()), num_threads, seed,
+                         TrainingSources(world_scenarios)) {}
 
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
                                        const std::vector<Scenario>& scenarios, int num_threads)

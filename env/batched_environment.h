@@ -40,11 +40,15 @@ struct WorldHistory {
 /// Its own results (OwnedStepResults) have one row per world.
 class BatchedEnvironment : public OwnedStepResults {
  public:
-  /// num_envs worlds of the paper's training scenario (or of `worlds`' variant of it); episode k
-  /// of world i is generated from TrainingEpisodeSeed(seed, i, k), so a run is a pure function of
-  /// `seed` and `worlds`.
+  /// num_envs worlds of the paper's training scenario; episode k of world i is generated from
+  /// TrainingEpisodeSeed(seed, i, k), so a run is a pure function of `seed`.
   BatchedEnvironment(const EnvironmentConfig& config, int num_envs, int num_threads,
-                     std::uint64_t seed, const TrainingScenarioConfig& worlds = {});
+                     std::uint64_t seed);
+  /// One world per entry of `world_scenarios`, each generating its episodes from that variant of
+  /// the training scenario (a mix of training worlds); seeds as above.
+  BatchedEnvironment(const EnvironmentConfig& config,
+                     const std::vector<TrainingScenarioConfig>& world_scenarios, int num_threads,
+                     std::uint64_t seed);
   /// One world per scenario, each replaying its scenario in every episode (scenario files, the
   /// evaluation's test worlds).
   BatchedEnvironment(const EnvironmentConfig& config, const std::vector<Scenario>& scenarios,

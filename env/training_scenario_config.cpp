@@ -10,20 +10,20 @@ constexpr double kMaxDisplacementSd = 5000.0;
 
 }  // namespace
 
-OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding() {
+OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding(const std::string& prefix) {
   using World = TrainingScenarioConfig;
   OptionsBinding<World> binding;
   binding
-      .Number("world.num_moving", &World::num_moving,
+      .Number(prefix + ".num_moving", &World::num_moving,
               "moving vessels per training world (the test scenarios keep the paper's 17)", 0,
               kMaxObstacles)
-      .Number("world.moving_displacement_sd", &World::moving_displacement_sd,
+      .Number(prefix + ".moving_displacement_sd", &World::moving_displacement_sd,
               "standard deviation (m) of a vessel's lateral offset from the path (training)", 0.0,
               kMaxDisplacementSd)
-      .Number("world.num_static", &World::num_static,
+      .Number(prefix + ".num_static", &World::num_static,
               "static circles per training world (the test scenarios keep the paper's 11)", 0,
               kMaxObstacles)
-      .Number("world.static_displacement_sd", &World::static_displacement_sd,
+      .Number(prefix + ".static_displacement_sd", &World::static_displacement_sd,
               "standard deviation (m) of a circle's lateral offset from the path (training)", 0.0,
               kMaxDisplacementSd);
   return binding;

@@ -3,13 +3,15 @@
 // are always the paper's (evaluation_episodes.cpp).
 #pragma once
 
+#include <string>
+
 #include "env/training_scenario.h"
 #include "src/options_binding.h"
 
 namespace colav {
 
-/// world.num_moving, world.moving_displacement_sd, world.num_static, world.static_displacement_sd,
-/// with the paper's values as defaults.
-OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding();
+/// PREFIX.num_moving, PREFIX.moving_displacement_sd, PREFIX.num_static,
+/// PREFIX.static_displacement_sd, with the paper's values as defaults.
+OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding(const std::string& prefix = "world");
 
 }  // namespace colav

@@ -124,18 +124,21 @@ std::vector<float> FirstObservation(const TrainingScenarioConfig& worlds, std::u
   return observation;
 }
 
-TEST(BatchedEnvironment, TrainsInTheWorldsItIsGiven) {
+TEST(BatchedEnvironment, EachWorldTrainsInItsOwnScenario) {
   TrainingScenarioConfig crowded;
   crowded.num_static = 30;
   crowded.static_displacement_sd = 20.0;
-  BatchedEnvironment envs(EnvironmentConfig{}, 2, 1, 7, crowded);
+  const std::vector<TrainingScenarioConfig> scenarios = {crowded, crowded, {}};
+  BatchedEnvironment envs(EnvironmentConfig{}, scenarios, 1, 7);
   envs.Reset();
-  for (int world = 0; world < 2; ++world) {
+  for (int world = 0; world < 3; ++world) {
     const std::vector<float> row(envs.observations() + world * kObservationSize,
                                  envs.observations() + (world + 1) * kObservationSize);
-    EXPECT_EQ(row, FirstObservation(crowded, 7, world));
-    EXPECT_NE(row, FirstObservation({}, 7, world));
+    EXPECT_EQ(row, FirstObservation(scenarios[world], 7, world)) << world;
   }
+  // The crowded worlds differ from the paper's world of the same seed.
+  EXPECT_NE(std::vector<float>(envs.observations(), envs.observations() + kObservationSize),
+            FirstObservation({}, 7, 0));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -128,6 +129,14 @@ EnvironmentConfig AuthorsTrainingEnvironment() {
   return config;
 }
 
+std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options) {
+  const int n_envs = options.ppo.n_envs;
+  const int second = static_cast<int>(std::lround(options.second_worlds_share * n_envs));
+  std::vector<TrainingScenarioConfig> scenarios(n_envs - second, options.worlds);
+  scenarios.insert(scenarios.end(), second, options.second_worlds);
+  return scenarios;
+}
+
 OptionsBinding<PpoRunOptions> PpoRunBinding() {
   using Run = PpoRunOptions;
   OptionsBinding<Run> binding;
@@ -246,7 +255,13 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "train.env_threads", [](Run & o) -> auto& { return o.ppo.env_threads; },
           "threads stepping the worlds (0: one per core)", 0, 256)
       .Include(EnvironmentBinding(), &Run::env)
-      .Include(TrainingScenarioBinding(), &Run::worlds)
+      .Include(TrainingScenarioBinding("world"), &Run::worlds)
+      .Include(TrainingScenarioBinding("world2"), &Run::second_worlds)
+      .Number(
+          "world2.share", [](Run & o) -> auto& { return o.second_worlds_share; },
+          "share of the training worlds (rounded to whole worlds, the last ones) playing the "
+          "world2.* scenario instead of world.*; 0: none",
+          0.0, 1.0)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
       .Then(DeriveModelSettings);

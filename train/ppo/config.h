@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "env/environment_spec.h"
 #include "env/training_scenario.h"
@@ -61,10 +62,18 @@ struct PpoRunOptions {
   std::optional<ClosenessTransform> encoder_closeness = ClosenessTransform::kLinear;
   /// The worlds the agent trains in; the paper's by default. Evaluation always uses the paper's.
   TrainingScenarioConfig worlds;
+  /// A second kind of training world, for a mix: this share of the ppo.n_envs worlds (rounded to
+  /// whole worlds, the last ones) play it instead of `worlds`.
+  TrainingScenarioConfig second_worlds;
+  double second_worlds_share = 0.0;
 };
 
-/// The ppo.*, policy.*, extractor.*, train.*, env.* and world.* keys. Reading checks that a VAE
-/// extractor has an encoder file and derives the model's seed from train.seed.
+/// The training scenario of each of the run's ppo.n_envs worlds: `worlds`, then the
+/// round(second_worlds_share * n_envs) worlds of `second_worlds`.
+std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options);
+
+/// The ppo.*, policy.*, extractor.*, train.*, env.*, world.* and world2.* keys. Reading checks that
+/// a VAE extractor has an encoder file and derives the model's seed from train.seed.
 OptionsBinding<PpoRunOptions> PpoRunBinding();
 
 }  // namespace colav

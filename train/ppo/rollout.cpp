@@ -16,19 +16,20 @@ bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeou
 }
 
 RolloutCollector::RolloutCollector(const EnvironmentConfig& config,
-                                   const TrainingScenarioConfig& worlds, int n_envs, int threads,
-                                   std::uint64_t env_seed, const RolloutRules& rules)
+                                   const std::vector<TrainingScenarioConfig>& world_scenarios,
+                                   int threads, std::uint64_t env_seed, const RolloutRules& rules)
     : env_seed_(env_seed),
       rules_(rules),
-      env_(config, n_envs, threads, env_seed, worlds),
-      reward_scaler_(n_envs, rules.gamma),
+      env_(config, world_scenarios, threads, env_seed),
+      reward_scaler_(env_.num_envs(), rules.gamma),
       normalized_observations_(rules.normalize_navigation
-                                   ? static_cast<std::size_t>(n_envs) * env_.observation_size()
+                                   ? static_cast<std::size_t>(env_.num_envs()) *
+                                         env_.observation_size()
                                    : 0),
       final_observation_(env_.observation_size()),
-      mean_(static_cast<std::size_t>(n_envs) * kActionSize),
+      mean_(static_cast<std::size_t>(env_.num_envs()) * kActionSize),
       bounded_actions_(mean_.size()),
-      scratch_values_(n_envs),
+      scratch_values_(env_.num_envs()),
       scratch_means_(kActionSize) {
   env_.Reset();
   SeeObservations(true);

@@ -53,10 +53,11 @@ struct RolloutRules {
 
 class RolloutCollector {
  public:
-  /// n_envs worlds of `worlds`' training scenario; env_seed determines every scenario they will
-  /// play.
-  RolloutCollector(const EnvironmentConfig& config, const TrainingScenarioConfig& worlds,
-                   int n_envs, int threads, std::uint64_t env_seed, const RolloutRules& rules);
+  /// One world per entry of `world_scenarios`, each playing that training scenario; env_seed
+  /// determines every scenario they will play.
+  RolloutCollector(const EnvironmentConfig& config,
+                   const std::vector<TrainingScenarioConfig>& world_scenarios, int threads,
+                   std::uint64_t env_seed, const RolloutRules& rules);
 
   /// Called after every environment step with the episodes that just ended; returning false stops
   /// the rollout early.

@@ -67,7 +67,7 @@ class PpoTrainer {
         rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
                               : RolloutStart{}),
         counters_(rollout_start_.counters),
-        collector_(options.env, options.worlds, options_.n_envs,
+        collector_(options.env, WorldScenarios(options),
                    ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
                    {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,

@@ -44,7 +44,8 @@ TEST(RolloutCollectorTest, TheBufferHoldsNormalisedNavigationValues) {
   for (const bool normalize : {true, false}) {
     RolloutRules rules;
     rules.normalize_navigation = normalize;
-    RolloutCollector collector(config, {}, kWorlds, 1, kSeed, rules);
+    RolloutCollector collector(config, std::vector<TrainingScenarioConfig>(kWorlds), 1, kSeed,
+                               rules);
     FastActorCritic policy(ActorCritic(ActorCriticOptions{}), kWorlds);
     RolloutBuffer buffer(1, kWorlds, width);
     collector.Collect(policy, torch::zeros({1, kWorlds, kActionSize}), buffer,
@@ -63,7 +64,8 @@ TEST(RolloutCollectorTest, TheWorldsGetClippedOrSquashedSamples) {
   constexpr std::uint64_t kSeed = 5;
   const EnvironmentConfig config;
   for (const bool squash : {false, true}) {
-    RolloutCollector collector(config, {}, kWorlds, 1, kSeed, RolloutRules{});
+    RolloutCollector collector(config, std::vector<TrainingScenarioConfig>(kWorlds), 1, kSeed,
+                               RolloutRules{});
     ActorCriticOptions options;
     options.squash_actions = squash;
     FastActorCritic policy(ActorCritic(options), kWorlds);
