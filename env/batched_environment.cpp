@@ -46,23 +46,12 @@ std::vector<std::shared_ptr<const ScenarioSource>> SharedTrainingSource(int num_
       num_envs, std::make_shared<TrainingScenarioGenerator>());
 }
 
-std::vector<std::shared_ptr<const ScenarioSource>> TrainingSources(
-    const std::vector<TrainingScenarioConfig>& world_scenarios) {
+// One source per item: a Source made from it (a training scenario's generator, a fixed scenario).
+template <typename Source, typename Item>
+std::vector<std::shared_ptr<const ScenarioSource>> SourcesOf(const std::vector<Item>& items) {
   std::vector<std::shared_ptr<const ScenarioSource>> sources;
-  sources.reserve(world_scenarios.size());
-  for (const TrainingScenarioConfig& scenario : world_scenarios) {
-    sources.push_back(std::make_shared<TrainingScenarioGenerator>(scenario));
-  }
-  return sources;
-}
-
-std::vector<std::shared_ptr<const ScenarioSource>> FixedSources(
-    const std::vector<Scenario>& scenarios) {
-  std::vector<std::shared_ptr<const ScenarioSource>> sources;
-  sources.reserve(scenarios.size());
-  for (const Scenario& scenario : scenarios) {
-    sources.push_back(std::make_shared<FixedScenarioSource>(scenario));
-  }
+  sources.reserve(items.size());
+  for (const Item& item : items) sources.push_back(std::make_shared<Source>(item));
   return sources;
 }
 
@@ -76,12 +65,12 @@ BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
                                        const std::vector<TrainingScenarioConfig>& world_scenarios,
                                        int num_threads, std::uint64_t seed)
     : BatchedEnvironment(config, static_cast<int>(world_scenarios.size()), num_threads, seed,
-                         TrainingSources(world_scenarios)) {}
+                         SourcesOf<TrainingScenarioGenerator>(world_scenarios)) {}
 
 BatchedEnvironment::BatchedEnvironment(const EnvironmentConfig& config,
                                        const std::vector<Scenario>& scenarios, int num_threads)
     : BatchedEnvironment(config, static_cast<int>(scenarios.size()), num_threads, 0,
-                         FixedSources(scenarios)) {}
+                         SourcesOf<FixedScenarioSource>(scenarios)) {}
 
 BatchedEnvironment::BatchedEnvironment(
     const EnvironmentConfig& config, int num_envs, int num_threads, std::uint64_t seed,
