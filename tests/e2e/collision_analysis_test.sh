@@ -15,19 +15,7 @@ fail() { echo "collision analysis: $*" >&2; exit 1; }
 
 rm -rf "$work"
 mkdir -p "$work"
-# TorchScript compiles from source files, not from standard input.
-cat >"$work/full_thrust.py" <<'PY'
-import sys
-import torch
-
-class FullThrust(torch.nn.Module):
-    def forward(self, obs: torch.Tensor) -> torch.Tensor:
-        return torch.tensor([1.0, 0.0]).expand(obs.shape[0], 2).contiguous()
-
-torch.jit.script(FullThrust()).save(sys.argv[1])
-PY
-"$python" "$work/full_thrust.py" "$work/full_thrust.pt"
-printf 'env:\n  closeness: linear\n' >"$work/full_thrust.pt.yaml"
+"$python" "$source/tests/e2e/full_thrust_policy.py" "$work/full_thrust.pt"
 {
   echo "a0,a1"
   for _ in $(seq 2000); do echo "1,0"; done

@@ -45,19 +45,7 @@ seen=$(awk -F, 'NR > 1 { for (i = 16; i <= NF; ++i) if ($i != 150) n++ } END { p
   "$work/bare.csv")
 ((seen == 0)) || fail "bare-000: $seen ranges under 150 m"
 
-# TorchScript compiles from source files, not from standard input.
-cat >"$work/full_thrust.py" <<'PY'
-import sys
-import torch
-
-class FullThrust(torch.nn.Module):
-    def forward(self, obs: torch.Tensor) -> torch.Tensor:
-        return torch.tensor([1.0, 0.0]).expand(obs.shape[0], 2).contiguous()
-
-torch.jit.script(FullThrust()).save(sys.argv[1])
-PY
-/usr/bin/python3 "$work/full_thrust.py" "$work/full_thrust.pt"
-printf 'env:\n  closeness: linear\n' >"$work/full_thrust.pt.yaml"
+/usr/bin/python3 "$source/tests/e2e/full_thrust_policy.py" "$work/full_thrust.pt"
 for cap in "" 2; do
   "$bin/evaluate" --policy "$work/full_thrust.pt" --policy "$work/full_thrust.pt" --name a \
     --name b --scenario "$work"/none/bare-00{0,1,2}.yaml ${cap:+--file-figures $cap} \
