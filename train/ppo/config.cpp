@@ -114,6 +114,16 @@ void RequireRolloutSizes(PpoRunOptions& options) {
   }
 }
 
+// A curriculum whose second stage no world would play.
+void RequireSecondWorldsShare(PpoRunOptions& options) {
+  if (options.second_worlds_from_step > 0 &&
+      std::lround(options.second_worlds_share * options.ppo.n_envs) == 0) {
+    throw UserError(fmt::format(
+        "world2.from_step = {}: no world plays world2.* (world2.share {} of {} worlds)",
+        options.second_worlds_from_step, options.second_worlds_share, options.ppo.n_envs));
+  }
+}
+
 // What the model takes from the rest of the configuration: its seed, and as many scans per
 // observation as the environment gives.
 void DeriveModelSettings(PpoRunOptions& options) {
@@ -129,9 +139,12 @@ EnvironmentConfig AuthorsTrainingEnvironment() {
   return config;
 }
 
-std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options) {
+std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options,
+                                                   std::int64_t step) {
   const int n_envs = options.ppo.n_envs;
-  const int second = static_cast<int>(std::lround(options.second_worlds_share * n_envs));
+  const int second = step < options.second_worlds_from_step
+                         ? 0
+                         : static_cast<int>(std::lround(options.second_worlds_share * n_envs));
   std::vector<TrainingScenarioConfig> scenarios(n_envs - second, options.worlds);
   scenarios.insert(scenarios.end(), second, options.second_worlds);
   return scenarios;
@@ -262,6 +275,12 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "share of the training worlds (rounded to whole worlds, the last ones) playing the "
           "world2.* scenario instead of world.*; 0: none",
           0.0, 1.0)
+      .Number(
+          "world2.from_step", [](Run & o) -> auto& { return o.second_worlds_from_step; },
+          "a curriculum: the world2.share worlds play world.* until the first rollout starting at "
+          "or after this step, then world2.*; 0: world2.* from the start",
+          0, kMaxSteps)
+      .Then(RequireSecondWorldsShare)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
       .Then(DeriveModelSettings);

@@ -66,11 +66,16 @@ struct PpoRunOptions {
   /// whole worlds, the last ones) play it instead of `worlds`.
   TrainingScenarioConfig second_worlds;
   double second_worlds_share = 0.0;
+  /// For a curriculum: those worlds play `worlds` until the first rollout that starts at or after
+  /// this step, then `second_worlds`. A step rather than a share of ppo.total_steps, so that
+  /// extending a run does not move it.
+  std::int64_t second_worlds_from_step = 0;
 };
 
-/// The training scenario of each of the run's ppo.n_envs worlds: `worlds`, then the
-/// round(second_worlds_share * n_envs) worlds of `second_worlds`.
-std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options);
+/// The training scenario of each of the run's ppo.n_envs worlds in a rollout that starts at
+/// `step`: `worlds`, then the round(second_worlds_share * n_envs) worlds of `second_worlds` once
+/// `step` reaches second_worlds_from_step (before, those play `worlds` too).
+std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options, std::int64_t step);
 
 /// The ppo.*, policy.*, extractor.*, train.*, env.*, world.* and world2.* keys. Reading checks that
 /// a VAE extractor has an encoder file and derives the model's seed from train.seed.

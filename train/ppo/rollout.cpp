@@ -18,39 +18,55 @@ bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeou
 RolloutCollector::RolloutCollector(const EnvironmentConfig& config,
                                    const std::vector<TrainingScenarioConfig>& world_scenarios,
                                    int threads, std::uint64_t env_seed, const RolloutRules& rules)
-    : env_seed_(env_seed),
+    : config_(config),
+      threads_(threads),
+      env_seed_(env_seed),
       rules_(rules),
-      env_(config, world_scenarios, threads, env_seed),
-      reward_scaler_(env_.num_envs(), rules.gamma),
+      env_(std::make_unique<BatchedEnvironment>(config, world_scenarios, threads, env_seed)),
+      reward_scaler_(env_->num_envs(), rules.gamma),
       normalized_observations_(rules.normalize_navigation
-                                   ? static_cast<std::size_t>(env_.num_envs()) *
-                                         env_.observation_size()
+                                   ? static_cast<std::size_t>(env_->num_envs()) *
+                                         env_->observation_size()
                                    : 0),
-      final_observation_(env_.observation_size()),
-      mean_(static_cast<std::size_t>(env_.num_envs()) * kActionSize),
+      final_observation_(env_->observation_size()),
+      mean_(static_cast<std::size_t>(env_->num_envs()) * kActionSize),
       bounded_actions_(mean_.size()),
-      scratch_values_(env_.num_envs()),
+      scratch_values_(env_->num_envs()),
       scratch_means_(kActionSize) {
-  env_.Reset();
+  env_->Reset();
+  SeeObservations(true);
+}
+
+void RolloutCollector::ReplaceWorlds(const std::vector<TrainingScenarioConfig>& world_scenarios) {
+  std::vector<WorldHistory> next_episodes = env_->histories();
+  for (WorldHistory& history : next_episodes) {
+    ++history.episode;
+    history.actions.clear();
+  }
+  env_ = std::make_unique<BatchedEnvironment>(config_, world_scenarios, threads_, env_seed_);
+  env_->Restore(next_episodes);
+  RewardScalingState scaling = reward_scaler_.state();
+  std::fill(scaling.returns.begin(), scaling.returns.end(), 0.0);
+  reward_scaler_.Restore(scaling);
   SeeObservations(true);
 }
 
 void RolloutCollector::SeeObservations(bool new_observations) {
   if (!rules_.normalize_navigation) return;
-  const int N = env_.num_envs();
-  std::copy_n(env_.observations(), normalized_observations_.size(),
+  const int N = env_->num_envs();
+  std::copy_n(env_->observations(), normalized_observations_.size(),
               normalized_observations_.data());
   float* seen = normalized_observations_.data();
-  if (new_observations) navigation_normalizer_.Update(seen, N, env_.observation_size());
-  navigation_normalizer_.Normalize(seen, N, env_.observation_size());
+  if (new_observations) navigation_normalizer_.Update(seen, N, env_->observation_size());
+  navigation_normalizer_.Normalize(seen, N, env_->observation_size());
 }
 
 const float* RolloutCollector::SeenObservations() const {
-  return rules_.normalize_navigation ? normalized_observations_.data() : env_.observations();
+  return rules_.normalize_navigation ? normalized_observations_.data() : env_->observations();
 }
 
 void RolloutCollector::RestoreWorlds(const std::vector<WorldHistory>& histories) {
-  env_.Restore(histories);
+  env_->Restore(histories);
   SeeObservations(false);
 }
 
@@ -66,7 +82,7 @@ std::optional<NavigationNormalization> RolloutCollector::navigation_normalizatio
 
 bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noise,
                                RolloutBuffer& buffer, const StepCallback& after_step) {
-  const int N = env_.num_envs();
+  const int N = env_->num_envs();
   const float* log_std = policy.log_std();
   float std[kActionSize];
   double log_prob_constant = -kActionSize * kLogSqrtTwoPi;
@@ -78,7 +94,7 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   const bool squash = policy.squash_actions();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
-    std::copy_n(SeenObservations(), N * env_.observation_size(), observations);
+    std::copy_n(SeenObservations(), N * env_->observation_size(), observations);
     policy.Predict(observations, N, mean_.data(), buffer.values(t));
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
@@ -94,26 +110,26 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
       buffer.log_probs(t)[e] = static_cast<float>(log_prob);
     }
     const auto step_start = std::chrono::steady_clock::now();
-    env_.Step(bounded_actions_.data());
+    env_->Step(bounded_actions_.data());
     env_seconds_ +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
     SeeObservations(true);
 
     finished_.clear();
     for (int e = 0; e < N; ++e) {
-      buffer.dones(t)[e] = env_.terminated()[e] || env_.truncated()[e];
+      buffer.dones(t)[e] = env_->terminated()[e] || env_->truncated()[e];
       buffer.bootstrapped(t)[e] = BootstrapsFromFinalObservation(
-          env_.terminated()[e] != 0, env_.truncated()[e] != 0, rules_.timeouts_terminal);
-      if (const auto& episode = env_.finished_episodes()[e]) {
+          env_->terminated()[e] != 0, env_->truncated()[e] != 0, rules_.timeouts_terminal);
+      if (const auto& episode = env_->finished_episodes()[e]) {
         // The world has moved on to its next episode already.
-        const std::uint64_t index = env_.histories()[e].episode - 1;
+        const std::uint64_t index = env_->histories()[e].episode - 1;
         finished_.push_back({e, TrainingEpisodeSeed(env_seed_, e, index), *episode});
       }
     }
     if (rules_.scale_rewards) {
-      reward_scaler_.Scale(env_.rewards(), buffer.dones(t), buffer.rewards(t));
+      reward_scaler_.Scale(env_->rewards(), buffer.dones(t), buffer.rewards(t));
     } else {
-      std::copy_n(env_.rewards(), N, buffer.rewards(t));
+      std::copy_n(env_->rewards(), N, buffer.rewards(t));
     }
     ValueFinalObservations(policy, t, buffer);
     if (!after_step(finished_)) return false;
@@ -124,16 +140,16 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
 
 void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
                                               RolloutBuffer& buffer) {
-  const int N = env_.num_envs();
+  const int N = env_->num_envs();
   for (int e = 0; e < N; ++e) {
     buffer.final_values(t)[e] = 0.0f;
     if (buffer.bootstrapped(t)[e] == 0) continue;
     // Rare (one step in 2000 per world): value the one row on its own.
     std::copy_n(
-        env_.final_observations() + static_cast<std::ptrdiff_t>(e) * env_.observation_size(),
-        env_.observation_size(), final_observation_.data());
+        env_->final_observations() + static_cast<std::ptrdiff_t>(e) * env_->observation_size(),
+        env_->observation_size(), final_observation_.data());
     if (rules_.normalize_navigation) {
-      navigation_normalizer_.Normalize(final_observation_.data(), 1, env_.observation_size());
+      navigation_normalizer_.Normalize(final_observation_.data(), 1, env_->observation_size());
     }
     policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data());
     buffer.final_values(t)[e] = scratch_values_[0];

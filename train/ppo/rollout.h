@@ -70,9 +70,14 @@ class RolloutCollector {
                const StepCallback& after_step);
 
   /// What each world has played since its episode started (a checkpoint's record of the worlds).
-  const std::vector<WorldHistory>& world_histories() const { return env_.histories(); }
+  const std::vector<WorldHistory>& world_histories() const { return env_->histories(); }
   /// Puts the worlds back where world_histories() left them (BatchedEnvironment::Restore).
   void RestoreWorlds(const std::vector<WorldHistory>& histories);
+  /// From now on each world plays its entry of `world_scenarios` (a curriculum's next stage):
+  /// every world abandons its episode, unlogged, and starts its next one in its new kind, so
+  /// that no episode is played partly in each kind and a resume can rebuild the worlds from
+  /// their histories. Their returns for reward scaling restart, as at an episode's end.
+  void ReplaceWorlds(const std::vector<TrainingScenarioConfig>& world_scenarios);
   /// The reward scaler's state (a checkpoint's record; unused when rewards are not scaled).
   const RewardScalingState& reward_scaling() const { return reward_scaler_.state(); }
   /// Throws std::invalid_argument if it was recorded for another number of worlds.
@@ -97,9 +102,11 @@ class RolloutCollector {
   /// The worlds' current observations as the policy sees them.
   const float* SeenObservations() const;
 
+  EnvironmentConfig config_;
+  int threads_;
   std::uint64_t env_seed_;
   RolloutRules rules_;
-  BatchedEnvironment env_;
+  std::unique_ptr<BatchedEnvironment> env_;  ///< replaced by ReplaceWorlds
   RewardScaler reward_scaler_;
   NavigationNormalizer navigation_normalizer_;
   std::vector<float> normalized_observations_;  ///< with navigation normalisation only

@@ -67,7 +67,9 @@ class PpoTrainer {
         rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
                               : RolloutStart{}),
         counters_(rollout_start_.counters),
-        collector_(options.env, WorldScenarios(options),
+        run_options_(options),
+        second_worlds_playing_(counters_.global_step >= options.second_worlds_from_step),
+        collector_(options.env, WorldScenarios(options, counters_.global_step),
                    ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
                    {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,
@@ -182,13 +184,24 @@ class PpoTrainer {
   }
 
   // Everything a resumed run needs besides the weights and optimiser, which do not change until
-  // the rollout's update.
+  // the rollout's update. A curriculum's worlds change first, so that the worlds a checkpoint
+  // records are those WorldScenarios gives at its step.
   void MarkRolloutStart() {
+    StartSecondWorldsWhenDue();
     rollout_start_.counters = counters_;
     rollout_start_.generator_state = generator_.get_state();
     rollout_start_.worlds = collector_.world_histories();
     rollout_start_.reward_scaling = collector_.reward_scaling();
     rollout_start_.navigation_moments = collector_.navigation_moments();
+  }
+
+  void StartSecondWorldsWhenDue() {
+    if (second_worlds_playing_ || counters_.global_step < run_options_.second_worlds_from_step) {
+      return;
+    }
+    collector_.ReplaceWorlds(WorldScenarios(run_options_, counters_.global_step));
+    second_worlds_playing_ = true;
+    spdlog::info("step {}: the curriculum's second worlds (world2.*) start", counters_.global_step);
   }
 
   static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {
@@ -205,6 +218,8 @@ class PpoTrainer {
   torch::Generator generator_;
   RolloutStart rollout_start_;  ///< of the rollout in progress, or the next one between rollouts
   TrainingCounters counters_;
+  PpoRunOptions run_options_;   ///< for the worlds of a curriculum's second stage
+  bool second_worlds_playing_;  ///< world2.from_step reached (always, without a curriculum)
   RolloutCollector collector_;
   TrainingLogs logs_;
   RolloutBuffer buffer_;

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 
 #include "src/atomic_file.h"
@@ -245,6 +246,50 @@ TEST(PpoCheckpointTest, ExtendedRunInCrowdedWorldsEqualsTheUninterruptedRun) {
   const RunsWithOption runs = TrainWithOption("world.num_static", directory.path(), "40");
   // The range-finder sees the extra circles, and the reward's closeness penalty with it.
   EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
+}
+
+// A curriculum: both worlds play the paper's scenario until the rollout starting at step 96, then
+// one crowded with circles.
+Config Curriculum(std::int64_t total_steps) {
+  Config config = ShortEpisodes(total_steps);
+  config.Set("world2.share", "1", "test");
+  config.Set("world2.num_static", "40", "test");
+  config.Set("world2.from_step", "96", "test");
+  return config;
+}
+
+// The lines of `text` whose first field (global_step) is at most `last_step`.
+std::string RowsUpTo(const std::string& text, std::int64_t last_step) {
+  std::istringstream in(text);
+  std::string kept, line;
+  std::getline(in, line);
+  while (std::getline(in, line) && std::stoll(line) <= last_step) kept += line + "\n";
+  return kept;
+}
+
+// Runs stopped before, at and after the switch resume into the uninterrupted run; until the
+// switch it is the plain run, after it another.
+TEST(PpoCheckpointTest, CurriculumSwitchesWorldsAtItsStepAndResumesAcrossIt) {
+  testing_util::TemporaryFolder directory;
+  const std::filesystem::path whole = directory.path() / "whole";
+  const std::filesystem::path plain = directory.path() / "plain";
+  std::filesystem::create_directories(whole);
+  std::filesystem::create_directories(plain);
+  Train(Curriculum(160), whole, /*resume=*/false);
+  Train(ShortEpisodes(160), plain, /*resume=*/false);
+  const std::string episodes = ReadFile(whole / "episodes.csv");
+  const std::string plain_episodes = ReadFile(plain / "episodes.csv");
+  EXPECT_GT(RowsUpTo(episodes, 96).size(), 0U);
+  EXPECT_EQ(RowsUpTo(episodes, 96), RowsUpTo(plain_episodes, 96));
+  EXPECT_TRUE(episodes != plain_episodes);
+  for (const std::int64_t first_session : {64, 96, 128}) {
+    const std::filesystem::path pieces = directory.path() / std::to_string(first_session);
+    std::filesystem::create_directories(pieces);
+    Train(Curriculum(first_session), pieces, /*resume=*/false);
+    Train(Curriculum(160), pieces, /*resume=*/true);
+    EXPECT_TRUE(episodes == ReadFile(pieces / "episodes.csv")) << first_session;
+    EXPECT_TRUE(ReadFile(whole / "policy.pt") == ReadFile(pieces / "policy.pt")) << first_session;
+  }
 }
 
 TEST(PpoCheckpointTest, ResumeRefusesAnEpisodesLogWithGarbageRows) {
