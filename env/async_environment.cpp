@@ -267,6 +267,12 @@ AsyncEnvironmentPool::AsyncEnvironmentPool(const EnvironmentConfig& config, int 
           std::make_unique<BatchedEnvironment>(config, CheckedWorldCount(num_envs), 1, seed),
           batch_size, num_threads) {}
 
+AsyncEnvironmentPool::AsyncEnvironmentPool(
+    const EnvironmentConfig& config, const std::vector<TrainingScenarioConfig>& world_scenarios,
+    int batch_size, int num_threads, std::uint64_t seed)
+    : AsyncEnvironmentPool(std::make_unique<BatchedEnvironment>(config, world_scenarios, 1, seed),
+                           batch_size, num_threads) {}
+
 AsyncEnvironmentPool::AsyncEnvironmentPool(const EnvironmentConfig& config,
                                            const std::vector<Scenario>& scenarios, int batch_size,
                                            int num_threads)

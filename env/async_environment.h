@@ -37,6 +37,11 @@ class AsyncEnvironmentPool : public OwnedStepResults {
   /// std::invalid_argument unless 1 <= batch_size <= num_envs and num_threads >= 1.
   AsyncEnvironmentPool(const EnvironmentConfig& config, int num_envs, int batch_size,
                        int num_threads, std::uint64_t seed);
+  /// One world per entry of `world_scenarios`, each generating its episodes from that variant of
+  /// the training scenario (BatchedEnvironment's mix of training worlds); seeds as above.
+  AsyncEnvironmentPool(const EnvironmentConfig& config,
+                       const std::vector<TrainingScenarioConfig>& world_scenarios, int batch_size,
+                       int num_threads, std::uint64_t seed);
   /// One world per scenario, replaying it in every episode.
   AsyncEnvironmentPool(const EnvironmentConfig& config, const std::vector<Scenario>& scenarios,
                        int batch_size, int num_threads);

@@ -3,6 +3,7 @@
 #include <pybind11/stl.h>
 
 #include <string>
+#include <vector>
 
 #include "src/threads/thread_pool.h"
 
@@ -41,9 +42,11 @@ void ReadEnvIds(const py::object& env_ids, int num_envs, std::vector<std::int32_
 
 }  // namespace
 
-AsyncVectorEnvironment::AsyncVectorEnvironment(const ResolvedSettings& settings, int num_envs,
+AsyncVectorEnvironment::AsyncVectorEnvironment(const ResolvedSettings& settings,
+                                               const ResolvedWorld& world, int num_envs,
                                                int batch_size, std::uint64_t seed, int num_threads)
-    : pool_(settings.config, num_envs, batch_size, ThreadCountOrAllCores(num_threads), seed),
+    : pool_(settings.config, std::vector<TrainingScenarioConfig>(num_envs, world.config),
+            batch_size, ThreadCountOrAllCores(num_threads), seed),
       outputs_{BatchArrays(batch_size, pool_.observation_size()),
                BatchArrays(batch_size, pool_.observation_size())},
       env_ids_{py::array_t<std::int32_t>(batch_size), py::array_t<std::int32_t>(batch_size)} {}
@@ -94,8 +97,9 @@ py::dict AsyncVectorEnvironment::FinishedEpisodes() const {
 
 void BindAsyncVectorEnvironment(py::module_& module) {
   py::class_<AsyncVectorEnvironment>(module, "AsyncVectorEnvironment")
-      .def(py::init<const ResolvedSettings&, int, int, std::uint64_t, int>(), py::arg("settings"),
-           py::arg("num_envs"), py::arg("batch_size"), py::arg("seed"), py::arg("num_threads"))
+      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, int, int, std::uint64_t, int>(),
+           py::arg("settings"), py::arg("world"), py::arg("num_envs"), py::arg("batch_size"),
+           py::arg("seed"), py::arg("num_threads"))
       .def(py::init<const ResolvedSettings&, const std::vector<Scenario>&, int, int>(),
            py::arg("settings"), py::arg("scenarios"), py::arg("batch_size"), py::arg("num_threads"))
       .def_property_readonly("num_envs", &AsyncVectorEnvironment::num_envs)

@@ -1,37 +1,60 @@
 #include "python/settings.h"
 
 #include "env/environment_config.h"
+#include "env/training_scenario_config.h"
 
 namespace colav::python {
 namespace {
 
-// Keywords are the env.* keys without their section: `closeness` is env.closeness.
-constexpr char kSection[] = "env.";
+// The sections whose keys are keywords: `closeness` is env.closeness, `num_static` (in `world`)
+// is world.num_static.
+constexpr char kEnvSection[] = "env";
+constexpr char kWorldSection[] = "world";
 
-std::string KeywordOf(const std::string& key) { return key.substr(sizeof kSection - 1); }
+std::string KeyOf(const std::string& section, const std::string& keyword) {
+  return section + "." + keyword;
+}
 
-}  // namespace
+std::string KeywordOf(const std::string& key) { return key.substr(key.find('.') + 1); }
 
-ResolvedSettings ResolveSettings(const std::map<std::string, std::string>& texts,
-                                 const std::string& origin) {
-  const OptionsBinding<EnvironmentConfig> binding = EnvironmentBinding();
+template <typename Options>
+Resolved<Options> Resolve(const OptionsBinding<Options>& binding, const std::string& section,
+                          const std::map<std::string, std::string>& texts,
+                          const std::string& origin) {
   const ConfigSchema schema = binding.Schema();
   Config config = Config::Defaults(schema);
-  for (const auto& [name, text] : texts) config.Set(kSection + name, text, origin);
-  ResolvedSettings resolved{binding.Read(config), {}};
+  for (const auto& [name, text] : texts) config.Set(KeyOf(section, name), text, origin);
+  Resolved<Options> resolved{binding.Read(config), {}};
   for (const ConfigSchema::Entry& entry : schema.entries()) {
     resolved.values.emplace_back(KeywordOf(entry.key), config.Value(entry.key));
   }
   return resolved;
 }
 
-std::vector<SettingDoc> SettingDocs() {
-  const ConfigSchema schema = EnvironmentBinding().Schema();
+std::vector<SettingDoc> DocsOf(const ConfigSchema& schema) {
   std::vector<SettingDoc> docs;
   for (const ConfigSchema::Entry& entry : schema.entries()) {
     docs.push_back({KeywordOf(entry.key), entry.default_value, entry.doc});
   }
   return docs;
+}
+
+}  // namespace
+
+ResolvedSettings ResolveSettings(const std::map<std::string, std::string>& texts,
+                                 const std::string& origin) {
+  return Resolve(EnvironmentBinding(), kEnvSection, texts, origin);
+}
+
+ResolvedWorld ResolveWorld(const std::map<std::string, std::string>& texts,
+                           const std::string& origin) {
+  return Resolve(TrainingScenarioBinding(kWorldSection), kWorldSection, texts, origin);
+}
+
+std::vector<SettingDoc> SettingDocs() { return DocsOf(EnvironmentBinding().Schema()); }
+
+std::vector<SettingDoc> WorldSettingDocs() {
+  return DocsOf(TrainingScenarioBinding(kWorldSection).Schema());
 }
 
 }  // namespace colav::python

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <memory>
 #include <stdexcept>
+#include <utility>
 
 #include "env/batched_environment.h"
 #include "env/scenario_file.h"
@@ -17,11 +18,6 @@ namespace {
 
 using DoubleAction = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
-std::shared_ptr<const ScenarioSource> SourceOf(std::optional<Scenario> scenario) {
-  if (scenario) return std::make_shared<FixedScenarioSource>(std::move(*scenario));
-  return std::make_shared<TrainingScenarioGenerator>();
-}
-
 template <typename Values>
 py::array_t<double> DoubleArray(const Values& values) {
   return py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
@@ -29,13 +25,23 @@ py::array_t<double> DoubleArray(const Values& values) {
 
 }  // namespace
 
+SingleEnvironment::SingleEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world,
+                                     std::uint64_t seed, bool render)
+    : SingleEnvironment(settings, std::make_shared<TrainingScenarioGenerator>(world.config),
+                        "training world", seed, render) {}
+
+SingleEnvironment::SingleEnvironment(const ResolvedSettings& settings, const Scenario& scenario,
+                                     std::uint64_t seed, bool render)
+    : SingleEnvironment(settings, std::make_shared<FixedScenarioSource>(scenario), scenario.name,
+                        seed, render) {}
+
 SingleEnvironment::SingleEnvironment(const ResolvedSettings& settings,
-                                     std::optional<Scenario> scenario, std::uint64_t seed,
-                                     bool render)
-    : environment_(settings.config, SourceOf(scenario)),
+                                     std::shared_ptr<const ScenarioSource> source,
+                                     std::string scene_name, std::uint64_t seed, bool render)
+    : environment_(settings.config, std::move(source)),
       seed_(seed),
       render_(render),
-      scene_name_(scenario ? scenario->name : "training world") {}
+      scene_name_(std::move(scene_name)) {}
 
 py::array_t<float> SingleEnvironment::Reset(std::optional<std::uint64_t> seed) {
   if (seed) {
@@ -98,7 +104,9 @@ py::array_t<std::uint8_t> SingleEnvironment::Render(int width, int height) const
 
 void BindSingleEnvironment(py::module_& module) {
   py::class_<SingleEnvironment>(module, "SingleEnvironment")
-      .def(py::init<const ResolvedSettings&, std::optional<Scenario>, std::uint64_t, bool>(),
+      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, std::uint64_t, bool>(),
+           py::arg("settings"), py::arg("world"), py::arg("seed"), py::arg("render") = false)
+      .def(py::init<const ResolvedSettings&, const Scenario&, std::uint64_t, bool>(),
            py::arg("settings"), py::arg("scenario"), py::arg("seed"), py::arg("render") = false)
       .def_property_readonly("observation_size", &SingleEnvironment::observation_size)
       .def("reset", &SingleEnvironment::Reset, py::arg("seed"))

@@ -6,6 +6,7 @@
 #include <pybind11/pybind11.h>
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -19,11 +20,14 @@ namespace py = pybind11;
 
 class SingleEnvironment {
  public:
-  /// Training worlds: episode k is the world of TrainingEpisodeSeed(seed, 0, k), as world 0 of a
-  /// VectorEnvironment with the same seed. With a scenario, every episode replays it. With
-  /// `render`, each episode is recorded for Render.
-  SingleEnvironment(const ResolvedSettings& settings, std::optional<Scenario> scenario,
+  /// Training worlds of `world`: episode k is the world of TrainingEpisodeSeed(seed, 0, k), as
+  /// world 0 of a VectorEnvironment with the same seed and world. With `render`, each episode is
+  /// recorded for Render.
+  SingleEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world,
                     std::uint64_t seed, bool render);
+  /// Every episode replays `scenario`; `render` as above.
+  SingleEnvironment(const ResolvedSettings& settings, const Scenario& scenario, std::uint64_t seed,
+                    bool render);
 
   /// Starts the next episode (with a seed: episode 0 of that seed); returns its observation.
   py::array_t<float> Reset(std::optional<std::uint64_t> seed);
@@ -46,6 +50,9 @@ class SingleEnvironment {
   py::array_t<std::uint8_t> Render(int width, int height) const;
 
  private:
+  SingleEnvironment(const ResolvedSettings& settings, std::shared_ptr<const ScenarioSource> source,
+                    std::string scene_name, std::uint64_t seed, bool render);
+
   Environment environment_;
   std::uint64_t seed_;
   std::uint64_t episode_ = 0;

@@ -20,10 +20,10 @@ namespace py = pybind11;
 
 class VectorEnvironment {
  public:
-  /// num_envs training worlds (episode k of world i from TrainingEpisodeSeed(seed, i, k)) on
-  /// num_threads threads (0: one per core).
-  VectorEnvironment(const ResolvedSettings& settings, int num_envs, std::uint64_t seed,
-                    int num_threads);
+  /// num_envs training worlds of `world` (episode k of world i from TrainingEpisodeSeed(seed, i,
+  /// k)) on num_threads threads (0: one per core).
+  VectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world, int num_envs,
+                    std::uint64_t seed, int num_threads);
   /// One world per scenario, replaying it in every episode.
   VectorEnvironment(const ResolvedSettings& settings, const std::vector<Scenario>& scenarios,
                     int num_threads);

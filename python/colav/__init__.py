@@ -7,6 +7,8 @@
 
     env = colav.make(scenario="configs/scenarios/head-on.yaml")  # one world, Gymnasium Env
 
+    envs = colav.make_vec(8, world={"num_static": 22})  # train_ppo's world.num_static=22
+
     envs = colav.make_async(num_envs=8, batch_size=4)  # EnvPool's asynchronous mode
     envs.async_reset()
     obs, reward, terminated, truncated, info = envs.recv()       # the first 4 worlds done
@@ -22,7 +24,7 @@ Bad settings, seeds or scenario files raise ValueError naming the key or file.
 
 from . import _colav
 from ._async import AsyncVectorEnv, make_async
-from ._envs import RENDER_SIZE, Env, VectorEnv, make, make_vec
+from ._envs import RENDER_SIZE, Env, VectorEnv, _resolve_world, make, make_vec
 from ._spaces import ACTION_SIZE, OBSERVATION_SIZE, Box, gymnasium
 
 UserError = _colav.UserError
@@ -34,14 +36,27 @@ def env_settings():
     return _colav.setting_docs()
 
 
+def world_settings():
+    """{keyword: (default, doc)} of every training world setting (the world.* keys of train_ppo),
+    the keys of the `world` dict of make, make_vec, make_async and training_scenario."""
+    return _colav.world_setting_docs()
+
+
 def load_scenario(path):
     """A scenario file (shared/spec/interfaces.md), validated."""
     return _colav.load_scenario_file(str(path))
 
 
-def training_scenario(seed):
-    """The paper's training world of this seed, as `simulate --training-seed` builds it."""
-    return _colav.training_scenario(seed)
+def training_scenario(seed, world=None):
+    """The training world of this seed: the paper's, as `simulate --training-seed` builds it, or
+    with `world` (as make_vec's) that kind of training world."""
+    return _colav.training_scenario(seed, _resolve_world(world, "colav.training_scenario"))
+
+
+def training_episode_seed(seed, env_id, episode):
+    """The seed of the training world that world env_id of make_vec(seed=seed) plays in its
+    episode `episode` (0 first): training_scenario of it, with the same world, is that episode."""
+    return _colav.training_episode_seed(seed, env_id, episode)
 
 
 def evaluation_scenario_seeds(count, seed=0):
@@ -58,5 +73,6 @@ def evaluation_scenarios(count=100, seed=0):
 __all__ = [
     "ACTION_SIZE", "OBSERVATION_SIZE", "AsyncVectorEnv", "Box", "Env", "Scenario", "UserError",
     "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async", "make_vec",
-    "evaluation_scenario_seeds", "evaluation_scenarios", "training_scenario",
+    "evaluation_scenario_seeds", "evaluation_scenarios", "training_episode_seed",
+    "training_scenario", "world_settings",
 ]

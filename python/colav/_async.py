@@ -4,7 +4,8 @@ the first batch_size done while the others go on stepping."""
 import numpy as np
 
 from . import _colav
-from ._envs import _Closed, _check_options, _optional_seed, _resolve, _whole_number, _worlds
+from ._envs import (_Closed, _check_options, _optional_seed, _resolve, _training_world, _values,
+                    _whole_number, _worlds)
 from ._spaces import action_space, observation_space
 
 
@@ -13,9 +14,10 @@ class AsyncVectorEnv:
     asynchronous mode, envpool.make(..., num_envs=N, batch_size=B)).
 
     AsyncVectorEnv(num_envs=8, seed=0, batch_size=None, scenarios=None, num_threads=0,
-    **settings): the worlds of make_vec(num_envs, seed, scenarios=..., **settings); batch_size
-    defaults to num_envs. num_threads (0: every core) counts the thread calling recv(), which
-    steps worlds too while it waits.
+    world=None, **settings): the worlds of make_vec(num_envs, seed, scenarios=..., world=...,
+    **settings), with its `settings` and `world` attributes; batch_size defaults to num_envs.
+    num_threads (0: every core) counts the thread calling recv(), which steps worlds too while it
+    waits.
 
         envs.async_reset()                                  # every world starts an episode
         obs, reward, terminated, truncated, info = envs.recv()
@@ -36,9 +38,11 @@ class AsyncVectorEnv:
     """
 
     def __init__(self, num_envs=None, seed=0, *, batch_size=None, scenarios=None, num_threads=0,
-                 **settings):
+                 world=None, **settings):
         resolved = _resolve(settings, "colav.AsyncVectorEnv")
+        training_world = _training_world(world, scenarios is not None, "colav.AsyncVectorEnv")
         self.settings = resolved.values
+        self.world = _values(training_world)
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         batch = count if batch_size is None else _whole_number("batch_size", batch_size, 1)
@@ -46,7 +50,7 @@ class AsyncVectorEnv:
             raise ValueError(f"batch_size: {batch} is more than the {count} worlds (num_envs)")
         if loaded is None:
             self._core = _colav.AsyncVectorEnvironment(
-                resolved, count, batch, _whole_number("seed", seed, 0), threads
+                resolved, training_world, count, batch, _whole_number("seed", seed, 0), threads
             )
         else:
             self._core = _colav.AsyncVectorEnvironment(resolved, loaded, batch, threads)
@@ -110,8 +114,8 @@ class AsyncVectorEnv:
 
 
 def make_async(num_envs=None, seed=0, *, batch_size=None, scenarios=None, num_threads=0,
-               **settings):
+               world=None, **settings):
     """colav.AsyncVectorEnv(num_envs, seed, batch_size=..., scenarios=..., num_threads=...,
-    **settings)."""
+    world=..., **settings)."""
     return AsyncVectorEnv(num_envs, seed, batch_size=batch_size, scenarios=scenarios,
-                          num_threads=num_threads, **settings)
+                          num_threads=num_threads, world=world, **settings)

@@ -26,8 +26,33 @@ def _setting_text(value):
     return str(value)
 
 
+def _setting_texts(settings):
+    return {name: _setting_text(value) for name, value in settings.items()}
+
+
 def _resolve(settings, origin):
-    return _colav.resolve_settings({name: _setting_text(v) for name, v in settings.items()}, origin)
+    return _colav.resolve_settings(_setting_texts(settings), origin)
+
+
+def _resolve_world(world, origin):
+    """The training world of the `world` keyword ({world.* key without "world.": value}, as
+    train_ppo reads them), the paper's without it."""
+    if world is None:
+        world = {}
+    if not isinstance(world, dict):
+        raise TypeError(f"world: expected a dict of world settings, got {world!r}")
+    return _colav.resolve_world(_setting_texts(world), origin)
+
+
+def _training_world(world, scenarios_given, origin):
+    """The resolved training world, or None when the worlds replay scenarios instead. A `world`
+    given with scenarios is an error: it would change nothing."""
+    if not scenarios_given:
+        return _resolve_world(world, origin)
+    if world is not None:
+        raise ValueError(f"{origin}: world sets the training worlds, which the scenarios "
+                         "replace: give one or the other")
+    return None
 
 
 def _scenario(scenario):
@@ -59,6 +84,10 @@ def _worlds(num_envs, scenarios):
     return len(loaded), loaded
 
 
+def _values(resolved):
+    return None if resolved is None else resolved.values
+
+
 def _optional_seed(seed):
     return None if seed is None else _whole_number("seed", seed, 0)
 
@@ -81,10 +110,14 @@ class _Closed:
 class Env(_EnvBase):
     """One world with the Gymnasium Env interface.
 
-    Env(seed=0, scenario=None, render_mode=None, **settings): training worlds (episode k is the
-    world of episode k of world 0 of make_vec(seed=seed)), or, with `scenario` (a scenario file
-    path or a colav.Scenario), that scenario in every episode. `settings` are the env.* keys of the programs'
-    configuration (colav.env_settings()), e.g. closeness="log", test_mode=True, max_steps=500.
+    Env(seed=0, scenario=None, render_mode=None, world=None, **settings): training worlds
+    (episode k is the world of episode k of world 0 of make_vec(seed=seed, world=world)), or,
+    with `scenario` (a scenario file path or a colav.Scenario), that scenario in every episode.
+    `settings` are the env.* keys of the programs' configuration (colav.env_settings()), e.g.
+    closeness="log", test_mode=True, max_steps=500. `world` holds train_ppo's world.* keys
+    without "world." (colav.world_settings()), e.g. {"num_static": 22}: the training worlds are
+    generated with them instead of the paper's. `settings` and `world` (None with a scenario) are
+    also attributes, with every key's resolved value.
 
     Actions are used in double precision, as `simulate` uses them. step() returns
     (obs float32 [6 + 180*(1+scan_history)] ([186] by default), reward float, terminated bool,
@@ -100,14 +133,16 @@ class Env(_EnvBase):
     metadata = {"render_modes": ["rgb_array"], "render_fps": 10}
     render_mode = None
 
-    def __init__(self, seed=0, *, scenario=None, render_mode=None, **settings):
+    def __init__(self, seed=0, *, scenario=None, render_mode=None, world=None, **settings):
         if render_mode not in (None, "rgb_array"):
             raise ValueError(f"render_mode: expected None or 'rgb_array', got {render_mode!r}")
         resolved = _resolve(settings, "colav.Env")
+        training_world = _training_world(world, scenario is not None, "colav.Env")
         self.settings = resolved.values
+        self.world = _values(training_world)
         self.render_mode = render_mode
         self._core = _colav.SingleEnvironment(
-            resolved, None if scenario is None else _scenario(scenario),
+            resolved, training_world if scenario is None else _scenario(scenario),
             _whole_number("seed", seed, 0), render=render_mode is not None,
         )
         self.observation_space = observation_space(self._core.observation_size)
@@ -144,11 +179,12 @@ class Env(_EnvBase):
 class VectorEnv(_VectorEnvBase):
     """A batch of worlds stepped together in C++ on a thread pool, with the GIL released.
 
-    VectorEnv(num_envs=8, seed=0, scenarios=None, num_threads=0, **settings): num_envs training
-    worlds (episode k of world i is generated from the seed, world and k alone), or one world per
-    entry of `scenarios` (scenario file paths or colav.Scenario objects, e.g.
+    VectorEnv(num_envs=8, seed=0, scenarios=None, num_threads=0, world=None, **settings): num_envs
+    training worlds (episode k of world i is generated from the seed, i and k alone, as
+    colav.training_scenario(colav.training_episode_seed(seed, i, k), world=world)), or one world
+    per entry of `scenarios` (scenario file paths or colav.Scenario objects, e.g.
     colav.training_scenario(s)) replaying it in every episode. num_threads 0 uses every core.
-    `settings` as for colav.Env.
+    `settings` and `world` (every world generated with it) as for colav.Env.
 
     step(actions [N, 2]) returns (obs float32 [N, 6 + 180*(1+scan_history)] ([N, 186] by
     default), reward float32 [N], terminated bool [N], truncated bool [N], info). float32 actions
@@ -167,14 +203,17 @@ class VectorEnv(_VectorEnvBase):
     metadata = {"autoreset_mode": _SAME_STEP, "render_modes": []}
     render_mode = None
 
-    def __init__(self, num_envs=None, seed=0, *, scenarios=None, num_threads=0, **settings):
+    def __init__(self, num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None,
+                 **settings):
         resolved = _resolve(settings, "colav.VectorEnv")
+        training_world = _training_world(world, scenarios is not None, "colav.VectorEnv")
         self.settings = resolved.values
+        self.world = _values(training_world)
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         if loaded is None:
             self._core = _colav.VectorEnvironment(
-                resolved, count, _whole_number("seed", seed, 0), threads
+                resolved, training_world, count, _whole_number("seed", seed, 0), threads
             )
         else:
             self._core = _colav.VectorEnvironment(resolved, loaded, threads)
@@ -208,11 +247,12 @@ class VectorEnv(_VectorEnvBase):
         self.closed = True
 
 
-def make(seed=0, *, scenario=None, **settings):
-    """colav.Env(seed, scenario=..., **settings)."""
-    return Env(seed, scenario=scenario, **settings)
+def make(seed=0, *, scenario=None, world=None, **settings):
+    """colav.Env(seed, scenario=..., world=..., **settings)."""
+    return Env(seed, scenario=scenario, world=world, **settings)
 
 
-def make_vec(num_envs=None, seed=0, *, scenarios=None, num_threads=0, **settings):
-    """colav.VectorEnv(num_envs, seed, scenarios=..., num_threads=..., **settings)."""
-    return VectorEnv(num_envs, seed, scenarios=scenarios, num_threads=num_threads, **settings)
+def make_vec(num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None, **settings):
+    """colav.VectorEnv(num_envs, seed, scenarios=..., num_threads=..., world=..., **settings)."""
+    return VectorEnv(num_envs, seed, scenarios=scenarios, num_threads=num_threads, world=world,
+                     **settings)

@@ -1,5 +1,6 @@
-"""Python gives what the programs give: a scenario stepped from Python writes the trace `simulate`
-writes, byte for byte, and a policy run from Python scores the metrics `evaluate` records."""
+"""Python gives what the programs give: a scenario file or training world stepped from Python
+writes the trace `simulate` writes, byte for byte, and a policy run from Python scores the metrics
+`evaluate` records."""
 
 import csv
 import importlib.util
@@ -28,8 +29,8 @@ def trace_row(step, state, reward=0.0, terminated=False, truncated=False):
                     + [range_text(r) for r in state["ranges"]])
 
 
-def python_trace(scenario_file, actions):
-    env = colav.make(scenario=scenario_file)
+def python_trace(env, actions):
+    """The rows of `simulate`'s trace of env's first episode under actions, from Python."""
     env.reset()
     rows = [trace_row(0, env.state())]
     for step, action in enumerate(actions, start=1):
@@ -45,15 +46,29 @@ def read_actions(path):
         return [[float(a0), float(a1)] for a0, a1 in list(csv.reader(file))[1:]]
 
 
-def assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path):
+def write_random_actions(path, seed):
+    """300 random actions, mostly ahead, as an actions file at path."""
+    rng = np.random.default_rng(seed)
+    rows = ["%.6f,%.6f" % (a0, a1) for a0, a1 in rng.uniform(-0.2, 1.0, size=(300, 2))]
+    path.write_text("a0,a1\n" + "\n".join(rows) + "\n")
+    return path
+
+
+def assert_same_trace_as_simulate(env, world_arguments, actions_file, tmp_path):
+    """env's first episode under the actions of actions_file is the trace `simulate` writes for
+    the world its world_arguments name (--scenario FILE or --training-seed S)."""
     trace_file = tmp_path / "trace.csv"
-    run_program("simulate", "--scenario", scenario_file, "--actions", actions_file,
-                "--out", trace_file)
+    run_program("simulate", *world_arguments, "--actions", actions_file, "--out", trace_file)
     expected = trace_file.read_text().splitlines()
-    actual = python_trace(scenario_file, read_actions(actions_file))
+    actual = python_trace(env, read_actions(actions_file))
     assert len(actual) == len(expected) - 1  # simulate also writes the header
     for row, (mine, theirs) in enumerate(zip(actual, expected[1:])):
         assert mine == theirs, f"row {row} differs"
+
+
+def assert_same_scenario_trace_as_simulate(scenario_file, actions_file, tmp_path):
+    assert_same_trace_as_simulate(colav.make(scenario=scenario_file),
+                                  ["--scenario", scenario_file], actions_file, tmp_path)
 
 
 @pytest.mark.skipif(not GOLDEN_CASES, reason=f"no golden cases in {GOLDEN_DIR}")
@@ -61,16 +76,22 @@ def assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path):
 def test_golden_case_from_python_is_the_simulate_trace(scenario_file, tmp_path):
     actions_file = scenario_file.with_name(scenario_file.name.replace(".scenario.yaml",
                                                                       ".actions.csv"))
-    assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path)
+    assert_same_scenario_trace_as_simulate(scenario_file, actions_file, tmp_path)
 
 
 @pytest.mark.parametrize("scenario_file", SCENARIO_FILES, ids=lambda p: p.stem)
 def test_scenario_file_from_python_is_the_simulate_trace(scenario_file, tmp_path):
-    rng = np.random.default_rng(len(scenario_file.stem))
-    actions_file = tmp_path / "actions.csv"
-    rows = ["%.6f,%.6f" % (a0, a1) for a0, a1 in rng.uniform(-0.2, 1.0, size=(300, 2))]
-    actions_file.write_text("a0,a1\n" + "\n".join(rows) + "\n")
-    assert_same_trace_as_simulate(scenario_file, actions_file, tmp_path)
+    actions_file = write_random_actions(tmp_path / "actions.csv", len(scenario_file.stem))
+    assert_same_scenario_trace_as_simulate(scenario_file, actions_file, tmp_path)
+
+
+def test_training_world_from_python_is_the_simulate_trace(tmp_path):
+    """Without `world`, colav.make(seed=6) plays the paper's training worlds: its first episode is
+    the training world `simulate --training-seed` builds for that episode's seed."""
+    actions_file = write_random_actions(tmp_path / "actions.csv", 5)
+    assert_same_trace_as_simulate(colav.make(seed=6),
+                                  ["--training-seed", colav.training_episode_seed(6, 0, 0)],
+                                  actions_file, tmp_path)
 
 
 class TinyPolicy(torch.nn.Module):
