@@ -153,6 +153,21 @@ TEST(AsyncEnvironmentPool, ScenarioWorldsPlayTheSynchronousTrajectory) {
   EXPECT_EQ(AsynchronousRun(pool, 25), SynchronousRun(envs, 25));
 }
 
+// Worlds of other training scenarios (a mix: two crowded with circles, one without vessels).
+TEST(AsyncEnvironmentPool, WorldsOfOtherTrainingScenariosPlayTheSynchronousTrajectory) {
+  TrainingScenarioConfig crowded;
+  crowded.num_static = 40;
+  TrainingScenarioConfig without_vessels;
+  without_vessels.num_moving = 0;
+  const std::vector<TrainingScenarioConfig> worlds = {crowded, crowded, without_vessels};
+  BatchedEnvironment envs(ShortEpisodes(), worlds, 1, kSeed);
+  AsyncEnvironmentPool pool(ShortEpisodes(), worlds, 2, 2, kSeed);
+  const Trajectories expected = SynchronousRun(envs, 25);
+  EXPECT_EQ(AsynchronousRun(pool, 25), expected);
+  BatchedEnvironment paper_worlds(ShortEpisodes(), 3, 1, kSeed);
+  EXPECT_NE(SynchronousRun(paper_worlds, 25), expected);
+}
+
 TEST(AsyncEnvironmentPool, FullBatchIsTheSynchronousEnvironment) {
   constexpr int kWorlds = 4;
   BatchedEnvironment envs(ShortEpisodes(), kWorlds, 1, kSeed);
