@@ -1,5 +1,6 @@
 // Which episode ends continue their return with gamma * V(final observation), what the policy sees
-// with normalised navigation values, and which actions the worlds get.
+// with normalised navigation values, which actions the worlds get, and what a curriculum's switch
+// does to the worlds.
 #include "train/ppo/rollout.h"
 
 #include <gtest/gtest.h>
@@ -89,6 +90,41 @@ TEST(RolloutCollectorTest, TheWorldsGetClippedOrSquashedSamples) {
               std::vector<float>(by_hand.observations(), by_hand.observations() + kWorlds * width))
         << (squash ? "squashed" : "clipped");
   }
+}
+
+// A curriculum's switch: every world leaves its episode and starts its next one in its new kind,
+// as a fresh environment of that kind restored to that episode shows, with its return restarted.
+TEST(RolloutCollectorTest, ReplacedWorldsStartTheirNextEpisodesInTheirNewKind) {
+  constexpr int kWorlds = 2;
+  constexpr std::uint64_t kSeed = 5;
+  const EnvironmentConfig config;
+  RolloutRules rules;
+  rules.scale_rewards = true;
+  rules.gamma = 0.99;
+  RolloutCollector collector(config, std::vector<TrainingScenarioConfig>(kWorlds), 1, kSeed, rules);
+  FastActorCritic policy(ActorCritic(ActorCriticOptions{}), kWorlds);
+  const int width = ObservationSize(config);
+  RolloutBuffer buffer(4, kWorlds, width);
+  const auto keep_going = [](const std::vector<FinishedEpisode>&) { return true; };
+  collector.Collect(policy, torch::zeros({4, kWorlds, kActionSize}), buffer, keep_going);
+  ASSERT_EQ(collector.world_histories()[0].actions.size(), 4U * kActionSize);
+
+  TrainingScenarioConfig crowded;
+  crowded.num_static = 40;
+  const std::vector<TrainingScenarioConfig> crowded_worlds(kWorlds, crowded);
+  collector.ReplaceWorlds(crowded_worlds);
+  for (const WorldHistory& history : collector.world_histories()) {
+    EXPECT_EQ(history.episode, 1U);
+    EXPECT_TRUE(history.actions.empty());
+  }
+  EXPECT_EQ(collector.reward_scaling().returns, std::vector<double>(kWorlds, 0.0));
+
+  BatchedEnvironment expected(config, crowded_worlds, 1, kSeed);
+  expected.Restore(std::vector<WorldHistory>(kWorlds, WorldHistory{1, {}}));
+  RolloutBuffer next(1, kWorlds, width);
+  collector.Collect(policy, torch::zeros({1, kWorlds, kActionSize}), next, keep_going);
+  EXPECT_TRUE(std::equal(expected.observations(), expected.observations() + kWorlds * width,
+                         next.observations(0)));
 }
 
 }  // namespace
