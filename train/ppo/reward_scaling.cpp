@@ -31,4 +31,8 @@ void RewardScaler::Restore(const RewardScalingState& state) {
   state_ = state;
 }
 
+void RewardScaler::RestartReturns() {
+  std::fill(state_.returns.begin(), state_.returns.end(), 0.0);
+}
+
 }  // namespace colav

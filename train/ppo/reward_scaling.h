@@ -38,6 +38,8 @@ class RewardScaler {
   const RewardScalingState& state() const { return state_; }
   /// Throws std::invalid_argument if `state` holds another number of worlds.
   void Restore(const RewardScalingState& state);
+  /// Restarts every world's return, as at the end of its episode (a curriculum's switch).
+  void RestartReturns();
 
  private:
   double gamma_;

@@ -45,9 +45,7 @@ void RolloutCollector::ReplaceWorlds(const std::vector<TrainingScenarioConfig>& 
   }
   env_ = std::make_unique<BatchedEnvironment>(config_, world_scenarios, threads_, env_seed_);
   env_->Restore(next_episodes);
-  RewardScalingState scaling = reward_scaler_.state();
-  std::fill(scaling.returns.begin(), scaling.returns.end(), 0.0);
-  reward_scaler_.Restore(scaling);
+  reward_scaler_.RestartReturns();
   SeeObservations(true);
 }
 

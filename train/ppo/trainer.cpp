@@ -3,6 +3,8 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <optional>
+#include <vector>
 
 #include "src/atomic_file.h"
 #include "src/cli.h"
@@ -67,8 +69,8 @@ class PpoTrainer {
         rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
                               : RolloutStart{}),
         counters_(rollout_start_.counters),
-        run_options_(options),
-        second_worlds_playing_(counters_.global_step >= options.second_worlds_from_step),
+        second_worlds_from_step_(options.second_worlds_from_step),
+        second_worlds_to_come_(SecondWorldsToCome(options, counters_.global_step)),
         collector_(options.env, WorldScenarios(options, counters_.global_step),
                    ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
@@ -195,12 +197,17 @@ class PpoTrainer {
     rollout_start_.navigation_moments = collector_.navigation_moments();
   }
 
+  // A curriculum's second-stage worlds, while a run at `step` has them still to come.
+  static std::optional<std::vector<TrainingScenarioConfig>> SecondWorldsToCome(
+      const PpoRunOptions& options, std::int64_t step) {
+    if (step >= options.second_worlds_from_step) return std::nullopt;
+    return WorldScenarios(options, options.second_worlds_from_step);
+  }
+
   void StartSecondWorldsWhenDue() {
-    if (second_worlds_playing_ || counters_.global_step < run_options_.second_worlds_from_step) {
-      return;
-    }
-    collector_.ReplaceWorlds(WorldScenarios(run_options_, counters_.global_step));
-    second_worlds_playing_ = true;
+    if (!second_worlds_to_come_ || counters_.global_step < second_worlds_from_step_) return;
+    collector_.ReplaceWorlds(*second_worlds_to_come_);
+    second_worlds_to_come_.reset();
     spdlog::info("step {}: the curriculum's second worlds (world2.*) start", counters_.global_step);
   }
 
@@ -218,8 +225,9 @@ class PpoTrainer {
   torch::Generator generator_;
   RolloutStart rollout_start_;  ///< of the rollout in progress, or the next one between rollouts
   TrainingCounters counters_;
-  PpoRunOptions run_options_;   ///< for the worlds of a curriculum's second stage
-  bool second_worlds_playing_;  ///< world2.from_step reached (always, without a curriculum)
+  std::int64_t second_worlds_from_step_;
+  /// Until world2.from_step; never without a curriculum.
+  std::optional<std::vector<TrainingScenarioConfig>> second_worlds_to_come_;
   RolloutCollector collector_;
   TrainingLogs logs_;
   RolloutBuffer buffer_;
