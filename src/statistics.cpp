@@ -106,6 +106,17 @@ MeanConfidenceInterval Summarise(const std::vector<double>& values, double level
   return summary;
 }
 
+Interval PredictionInterval(const std::vector<double>& values, double level) {
+  if (values.size() < 2) {
+    throw std::invalid_argument("a prediction interval needs at least two values");
+  }
+  const double n = static_cast<double>(values.size());
+  const double mean = Mean(values);
+  const double half_width = StudentTQuantile(0.5 + level / 2.0, n - 1.0) *
+                            SampleStandardDeviation(values) * std::sqrt(1.0 + 1.0 / n);
+  return {mean - half_width, mean + half_width};
+}
+
 nlohmann::ordered_json ConfidenceIntervalJson(const MeanConfidenceInterval& interval) {
   return {{"n", interval.count}, {"mean", interval.mean}, {"sd", interval.sd},
           {"low", interval.low}, {"high", interval.high}, {"half_width", interval.half_width}};

@@ -7,6 +7,8 @@
 #include <nlohmann/json.hpp>
 #include <vector>
 
+#include "src/rate_interval.h"
+
 namespace colav {
 
 double Mean(const std::vector<double>& values);
@@ -30,6 +32,12 @@ struct MeanConfidenceInterval {
 
 /// The summary of `values` (not empty; std::invalid_argument otherwise).
 MeanConfidenceInterval Summarise(const std::vector<double>& values, double level = 0.95);
+
+/// The two-sided interval that holds one more draw from the population of `values` (at least
+/// two) with probability `level`, if that population is normal: mean +- t_{(1+level)/2, n-1} *
+/// sd * sqrt(1 + 1/n). Where the confidence interval bounds the population's mean, this bounds
+/// one new member: one more training seed's result, say. std::invalid_argument for fewer than two.
+Interval PredictionInterval(const std::vector<double>& values, double level = 0.95);
 
 /// `interval` as the JSON object {n, mean, sd, low, high, half_width}, in this order.
 nlohmann::ordered_json ConfidenceIntervalJson(const MeanConfidenceInterval& interval);

@@ -29,9 +29,6 @@ std::vector<double> Pooled(const std::vector<const ModelEpisodes*>& seeds,
   return all;
 }
 
-// Rates and progress are bounded: their intervals must stay inside [0, 100] %.
-bool IsBounded(const StudyMetric& metric) { return metric.is_rate || metric.name == "progress"; }
-
 // Over seeds when there are several (the spread that matters between recipes), otherwise over
 // the scenarios of the one model; intervals of bounded metrics stay in range.
 MetricEstimate Estimate(const std::vector<const ModelEpisodes*>& seeds, const StudyMetric& metric) {
@@ -49,7 +46,7 @@ MetricEstimate Estimate(const std::vector<const ModelEpisodes*>& seeds, const St
     const Interval rate = WilsonInterval(successes, static_cast<std::int64_t>(pooled.size()));
     estimate.ci = {rate.low * metric.scale, rate.high * metric.scale};
     estimate.method = "Wilson";
-  } else if (IsBounded(metric)) {
+  } else if (metric.bounded()) {
     estimate.ci = PercentileBootstrapMean(values, kBootstrapSeed);
     estimate.method = "bootstrap";
   } else {
@@ -138,6 +135,20 @@ nlohmann::json ToJson(const ScenarioSetReport& report) {
     json["probability_of_improvement"].push_back(
         {{"model", row.model}, {"over", row.over}, {"metrics", metrics}});
   }
+  json["agents_among_seeds"] = nlohmann::json::array();
+  for (const AgentAmongSeeds& row : report.agents_among_seeds) {
+    nlohmann::json metrics;
+    for (const auto& [name, place] : row.metrics) {
+      metrics[name] = {{"value", place.value},
+                       {"prediction_low", place.prediction.low},
+                       {"prediction_high", place.prediction.high},
+                       {"inside", place.inside},
+                       {"seeds_better", place.seeds_better},
+                       {"seeds", place.seeds}};
+    }
+    json["agents_among_seeds"].push_back(
+        {{"config", row.config}, {"agent", row.agent}, {"metrics", metrics}});
+  }
   return json;
 }
 
@@ -168,6 +179,28 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
         "| model | over | progress | cte | collisions |\n|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
     md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
+       << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
+       << Cell(row.metrics.at("collision")) << " |\n";
+  }
+}
+
+std::string Cell(const SeedPlacement& place) {
+  return fmt::format("{:.1f} {} [{:.1f}, {:.1f}], {} of {} better", place.value,
+                     place.inside ? "in" : "**out of**", place.prediction.low,
+                     place.prediction.high, place.seeds_better, place.seeds);
+}
+
+void AgentsAmongSeedsTable(std::ostringstream& md, const ScenarioSetReport& report) {
+  if (report.agents_among_seeds.empty()) return;
+  md << "\nCould each single agent have been one more training seed of a configuration? Its "
+        "mean, the configuration's 95 % prediction interval for one more seed's mean (Student-t "
+        "over the seeds' means, assuming they spread normally: mean +- t sd sqrt(1 + 1/n)), and "
+        "how many of the seeds did better than the agent. A single agent is one seed of its own "
+        "recipe, so its interval over the scenarios does not hold another seed of that "
+        "recipe.\n\n"
+        "| configuration | agent | progress % | cte m | collisions % |\n|---|---|---|---|---|\n";
+  for (const AgentAmongSeeds& row : report.agents_among_seeds) {
+    md << "| " << row.config << " | " << row.agent << " | " << Cell(row.metrics.at("progress"))
        << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
        << Cell(row.metrics.at("collision")) << " |\n";
   }
@@ -288,6 +321,10 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
             Scores(seeds.second, metric), Scores(other.second, metric), kBootstrapSeed);
       }
       report.improvements.push_back(row);
+      if (other.second.size() == 1 && seeds.second.size() >= 2) {
+        report.agents_among_seeds.push_back(
+            PlaceAmongSeeds(config.name, seeds.second, other.first, *other.second.front()));
+      }
     }
   }
   return report;
@@ -321,6 +358,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     ModelTable(md, report);
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
+    AgentsAmongSeedsTable(md, report);
     OutcomeTable(md, report);
     if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);
   }

@@ -1,7 +1,8 @@
 // The study's report: each model's metrics with intervals (over training seeds for our PPO
 // configurations, over scenarios for single agents), the probability that one configuration beats
 // another on a random scenario and seed, where each model's progress and cross-track error go
-// (outcome_breakdown.h), and the paper's table beside ours. Written as
+// (outcome_breakdown.h), where each single agent falls among a configuration's seeds
+// (agent_among_seeds.h), and the paper's table beside ours. Written as
 // OUT/REPORT.md and OUT/summary.json (every figure of the report, machine-readable).
 #pragma once
 
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/agent_among_seeds.h"
 #include "eval/study/outcome_breakdown.h"
 #include "eval/study/study_results.h"
 #include "src/seed_aggregates.h"
@@ -40,11 +42,13 @@ struct ScenarioSetReport {
   int episodes = 0;
   std::vector<ModelSummary> models;
   std::vector<ImprovementSummary> improvements;
+  std::vector<AgentAmongSeeds> agents_among_seeds;  ///< every configuration x single agent
 };
 
 /// The report of one scenario set: configurations (models "<config>.seed_<k>") summarised over
 /// their seeds, other models over scenarios; the probability of improvement of every
-/// configuration over `reference_config` (if present) and over each single model.
+/// configuration over `reference_config` (if present) and over each single model; where each
+/// single model falls among the seeds of each configuration of two or more seeds.
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config);
 

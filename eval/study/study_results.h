@@ -20,6 +20,9 @@ struct StudyMetric {
   double scale;        ///< 100 for fractions shown as %
   bool higher_is_better;
   bool is_rate;  ///< 0/1 per episode: Wilson intervals
+
+  /// Progress and the rates: their intervals must stay inside [0, scale].
+  bool bounded() const { return is_rate || name == "progress"; }
 };
 
 /// progress, cross_track_error, duration, collision, goal, time_out.

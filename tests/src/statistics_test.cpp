@@ -47,5 +47,17 @@ TEST(StatisticsTest, SingleValueHasNoInterval) {
   EXPECT_EQ(summary.high, 42.0);
 }
 
+// 1..5: mean 3, sd^2 2.5, so sd * sqrt(1 + 1/5) = sqrt(3); the confidence interval's half-width
+// is t * sd / sqrt(5), the prediction interval's t * sqrt(3), 2.449 times as wide.
+TEST(StatisticsTest, PredictionIntervalForOneMoreValue) {
+  const Interval interval = PredictionInterval({1, 2, 3, 4, 5});
+  const double half_width = 2.776445105 * std::sqrt(3.0);
+  EXPECT_NEAR(interval.low, 3.0 - half_width, 1e-8);
+  EXPECT_NEAR(interval.high, 3.0 + half_width, 1e-8);
+  const Interval narrower = PredictionInterval({1, 2, 3, 4, 5}, 0.5);
+  EXPECT_NEAR(narrower.high - 3.0, StudentTQuantile(0.75, 4) * std::sqrt(3.0), 1e-10);
+  EXPECT_THROW(PredictionInterval({42.0}), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace colav

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace colav {
 namespace {
 
@@ -76,6 +78,50 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_DOUBLE_EQ(over_baseline.metrics.at("collision").probability, 10.0 / 16.0);
   EXPECT_EQ(report.improvements[1].over, "ref.agent");
   EXPECT_EQ(report.improvements[2].model, "baseline");
+  // Each configuration against the single agent only, not against the other configuration.
+  ASSERT_EQ(report.agents_among_seeds.size(), 2U);
+  EXPECT_EQ(report.agents_among_seeds[0].config, "better");
+  EXPECT_EQ(report.agents_among_seeds[0].agent, "ref.agent");
+  EXPECT_EQ(report.agents_among_seeds[1].config, "baseline");
+}
+
+// Three seeds with cte 10, 20 and 30 m (mean 20, sd 10): one more seed lands within 20 +-
+// t(0.975, 2) * 10 * sqrt(4 / 3) = 20 +- 49.68 m; progress 98, 99 and 100 % (sd 1) within 99 +-
+// 4.97, clipped at 100; collisions 0 % on every seed, a zero-width interval.
+TEST(StudyReportTest, WhereASingleAgentFallsAmongTheSeeds) {
+  StudySpec spec;
+  spec.ppo_seeds = 3;
+  spec.ppo_configs = {{"mine", "baseline", "", true, {}}};
+  ScenarioSetResults results;
+  results.episodes = 2;
+  results.models["mine.seed_0"] = Episodes({98, 98}, {10, 10}, {0, 0});
+  results.models["mine.seed_1"] = Episodes({99, 99}, {20, 20}, {0, 0});
+  results.models["mine.seed_2"] = Episodes({100, 100}, {30, 30}, {0, 0});
+  results.models["ref.agent"] = Episodes({100, 98}, {12, 18}, {0, 100});
+
+  const ScenarioSetReport report = SummariseScenarioSet(spec, results, "");
+  ASSERT_EQ(report.agents_among_seeds.size(), 1U);
+  const AgentAmongSeeds& row = report.agents_among_seeds[0];
+  const double t = 4.302652730;  // t(0.975, 2)
+  const SeedPlacement& cte = row.metrics.at("cross_track_error");
+  EXPECT_DOUBLE_EQ(cte.value, 15.0);
+  EXPECT_NEAR(cte.prediction.low, 20.0 - t * 10.0 * std::sqrt(4.0 / 3.0), 1e-6);
+  EXPECT_NEAR(cte.prediction.high, 20.0 + t * 10.0 * std::sqrt(4.0 / 3.0), 1e-6);
+  EXPECT_TRUE(cte.inside);
+  EXPECT_EQ(cte.seeds_better, 1);  // only the 10 m seed keeps closer to the path
+  EXPECT_EQ(cte.seeds, 3);
+  const SeedPlacement& progress = row.metrics.at("progress");
+  EXPECT_DOUBLE_EQ(progress.value, 99.0);
+  EXPECT_NEAR(progress.prediction.low, 99.0 - t * std::sqrt(4.0 / 3.0), 1e-6);
+  EXPECT_DOUBLE_EQ(progress.prediction.high, 100.0);  // clipped
+  EXPECT_TRUE(progress.inside);
+  EXPECT_EQ(progress.seeds_better, 1);  // the tie at 99 % does not count
+  const SeedPlacement& collision = row.metrics.at("collision");
+  EXPECT_DOUBLE_EQ(collision.value, 50.0);
+  EXPECT_DOUBLE_EQ(collision.prediction.low, 0.0);
+  EXPECT_DOUBLE_EQ(collision.prediction.high, 0.0);
+  EXPECT_FALSE(collision.inside);
+  EXPECT_EQ(collision.seeds_better, 3);
 }
 
 // Two seeds, three scenarios: seed 0 collides at 40 % and times out at 20 % on scenario 1, seed 1
