@@ -11,6 +11,7 @@ namespace {
 const double kTrunkGain = std::sqrt(2.0);
 constexpr double kActionGain = 0.01;
 constexpr double kValueGain = 1.0;
+constexpr double kRecurrentGain = 1.0;  // CleanRL's ppo_atari_lstm
 
 torch::nn::Sequential TanhMlp(std::int64_t in_features, const std::vector<std::int64_t>& sizes) {
   torch::nn::Sequential mlp;
@@ -68,8 +69,13 @@ ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::mov
   TORCH_CHECK(!options_.hidden_sizes.empty(), "the actor and critic need a hidden layer");
   features_extractor_ = register_module("features_extractor", FeatureExtractor(options_.extractor));
   const std::int64_t features_dim = features_extractor_->features_dim();
-  mlp_extractor_ =
-      register_module("mlp_extractor", MlpExtractor(features_dim, options_.hidden_sizes));
+  TORCH_CHECK(options_.recurrent_size >= 0, "recurrent_size must not be negative");
+  if (options_.recurrent_size > 0) {
+    recurrent_ =
+        register_module("recurrent", torch::nn::GRUCell(features_dim, options_.recurrent_size));
+  }
+  mlp_extractor_ = register_module(
+      "mlp_extractor", MlpExtractor(features_dim + options_.recurrent_size, options_.hidden_sizes));
   const std::int64_t latent = options_.hidden_sizes.back();
   action_net_ = register_module("action_net", torch::nn::Linear(latent, kActionSize));
   value_net_ = register_module("value_net", torch::nn::Linear(latent, 1));
@@ -96,13 +102,30 @@ void ActorCriticImpl::Initialise() {
   InitTrunk(mlp_extractor_->value_net, generator);
   InitLinear(action_net_, kActionGain, generator);
   InitLinear(value_net_, kValueGain, generator);
+  if (recurrent_) {  // last: the memoryless models draw exactly what they drew before
+    OrthogonalInit(recurrent_->weight_ih, kRecurrentGain, generator);
+    OrthogonalInit(recurrent_->weight_hh, kRecurrentGain, generator);
+    recurrent_->bias_ih.zero_();
+    recurrent_->bias_hh.zero_();
+  }
 }
 
 std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
     const torch::Tensor& observations) {
+  TORCH_CHECK(!recurrent_, "a recurrent model steps with forward_recurrent");
   const torch::Tensor features = features_extractor_->forward(observations);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(features)),
           value_net_->forward(mlp_extractor_->value_net->forward(features))};
+}
+
+std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward_recurrent(
+    const torch::Tensor& observations, const torch::Tensor& states) {
+  TORCH_CHECK(recurrent_, "forward_recurrent needs a model with recurrent_size > 0");
+  const torch::Tensor features = features_extractor_->forward(observations);
+  const torch::Tensor next_states = recurrent_->forward(features, states);
+  const torch::Tensor trunk_input = torch::cat({features, next_states}, 1);
+  return {action_net_->forward(mlp_extractor_->policy_net->forward(trunk_input)),
+          value_net_->forward(mlp_extractor_->value_net->forward(trunk_input)), next_states};
 }
 
 std::vector<torch::Tensor> ActorCriticImpl::TrainableParameters() const {

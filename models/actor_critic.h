@@ -10,8 +10,15 @@
 // its weights; the baseline's conv keeps PyTorch's default initialisation. Every random draw comes
 // from a generator seeded by ActorCriticOptions::seed.
 //
+// With recurrent_size H > 0 the policy has a memory: a GRU cell (torch.nn.GRUCell) between the
+// extractor and the trunks, shared by actor and critic, turns the features x_t and the state
+// h_{t-1} into h_t, and both trunks read [x_t, h_t] (the features stay in view, so the memory
+// adds to the memoryless policy rather than replacing its input). The state is 0 at the start of
+// every episode. Its weights are orthogonal (gain 1, CleanRL's recurrent PPO), its biases 0.
+//
 // Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
-// mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std.
+// mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std; the GRU's are
+// recurrent.{weight_ih, weight_hh, bias_ih, bias_hh} (gates in PyTorch's order r, z, n).
 #pragma once
 
 #include <torch/torch.h>
@@ -19,6 +26,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -34,6 +42,8 @@ struct ActorCriticOptions {
   /// inside [-1, 1], so its entropy is bounded and the entropy bonus cannot widen the std without
   /// end (train/ppo/loss.h).
   bool squash_actions = false;
+  /// Size of the GRU state between the extractor and the trunks; 0: no memory (the paper's).
+  std::int64_t recurrent_size = 0;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 };
 
@@ -55,6 +65,12 @@ class ActorCriticImpl : public torch::nn::Module {
   /// (action mean [B, 2], value [B, 1]).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
 
+  /// One step of a recurrent policy: observations [B, n] and states [B, recurrent_size] (the
+  /// state before these observations; 0 at an episode's start) -> (action mean [B, 2], value
+  /// [B, 1], state after [B, recurrent_size]).
+  std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> forward_recurrent(
+      const torch::Tensor& observations, const torch::Tensor& states);
+
   /// The parameters the optimiser updates: all but those of a locked encoder, in module order.
   std::vector<torch::Tensor> TrainableParameters() const;
 
@@ -64,12 +80,15 @@ class ActorCriticImpl : public torch::nn::Module {
   torch::nn::Linear& action_net() { return action_net_; }
   torch::nn::Linear& value_net() { return value_net_; }
   torch::Tensor& log_std() { return log_std_; }
+  /// The GRU cell; empty unless recurrent_size > 0.
+  torch::nn::GRUCell& recurrent() { return recurrent_; }
 
  private:
   void Initialise();
 
   ActorCriticOptions options_;
   FeatureExtractor features_extractor_{nullptr};
+  torch::nn::GRUCell recurrent_{nullptr};
   MlpExtractor mlp_extractor_{nullptr};
   torch::nn::Linear action_net_{nullptr};
   torch::nn::Linear value_net_{nullptr};

@@ -171,13 +171,26 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
       rows_(max_batch),
       perception_input_(static_cast<std::size_t>(kNumRays) * scans_ * max_batch),
       features_(static_cast<std::size_t>(features_dim_) * max_batch),
-      d_features_actor_(features_.size()),
-      d_features_critic_(features_.size()),
+      trunk_input_(recurrent_size() > 0 ? static_cast<std::size_t>(actor_.in_size()) * max_batch
+                                        : 0),
+      d_features_actor_(static_cast<std::size_t>(actor_.in_size()) * max_batch),
+      d_features_critic_(d_features_actor_.size()),
       d_perception_(
           scans_ > 1 ? static_cast<std::size_t>(features_dim_ - kNavigationSize) * max_batch : 0) {
   TORCH_CHECK(perception_.in_size() == kNumRays, "the perception stack must read 180 values");
   TORCH_CHECK(kNavigationSize + scans_ * perception_.out_size() == features_dim_,
               "perception output does not match features_dim");
+  if (recurrent_size() > 0) {
+    torch::nn::GRUCell& cell = model_->recurrent();
+    gru_.emplace(
+        cell,
+        std::vector<torch::Tensor>{GradientOf(cell->weight_ih), GradientOf(cell->weight_hh),
+                                   GradientOf(cell->bias_ih), GradientOf(cell->bias_hh)},
+        max_batch);
+    initial_states_columns_.resize(static_cast<std::size_t>(recurrent_size()) * max_batch);
+    state_rows_.resize(max_batch);
+    d_gru_input_.resize(features_.size());
+  }
 }
 
 torch::Tensor FastActorCritic::GradientOf(const torch::Tensor& parameter) const {
@@ -206,16 +219,33 @@ FastLayer FastActorCritic::Bind(FastLayer::Kind kind, const torch::Tensor& weigh
   return layer;
 }
 
-void FastActorCritic::Predict(const float* observations, int B, float* mean, float* value) {
+void FastActorCritic::Predict(const float* observations, int B, float* mean, float* value,
+                              float* states) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
+  TORCH_CHECK((states != nullptr) == (gru_.has_value()),
+              "a recurrent model predicts from states, a memoryless one without");
   for (int b = 0; b < B; ++b) {
     rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * observation_size_;
+    if (gru_) state_rows_[b] = states + static_cast<std::ptrdiff_t>(b) * recurrent_size();
   }
+  if (gru_) SetSequences(state_rows_.data(), nullptr, B);  // B sequences of one step
   ForwardObservations(rows_.data(), B);
   for (int b = 0; b < B; ++b) {
     for (int j = 0; j < kActionSize; ++j) mean[b * kActionSize + j] = mean_[j * B + b];
     value[b] = value_[b];
   }
+  if (gru_) {
+    const float* next = trunk_input_.data() + static_cast<std::ptrdiff_t>(features_dim_) * B;
+    kernels::Transpose(next, recurrent_size(), B, states);
+  }
+}
+
+void FastActorCritic::SetSequences(const float* const* initial_states, const std::uint8_t* reset,
+                                   int sequences) {
+  TORCH_CHECK(gru_, "SetSequences is for recurrent models");
+  initial_states_ = initial_states;
+  reset_ = reset;
+  sequences_ = sequences;
 }
 
 void FastActorCritic::Features(const float* observations, int count, float* features) {
@@ -257,22 +287,48 @@ void FastActorCritic::ForwardExtractor(const float* const* rows, int B) {
 
 void FastActorCritic::ForwardFromFeatures(int B) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
-  mean_ = actor_.Forward(features_.data(), B);
-  value_ = critic_.Forward(features_.data(), B);
+  if (gru_) ForwardRecurrent(B);
+  mean_ = actor_.Forward(TrunkInput(), B);
+  value_ = critic_.Forward(TrunkInput(), B);
+}
+
+// trunk_input_ = [features_; the GRU's state after each sample] over the sequences of
+// SetSequences.
+void FastActorCritic::ForwardRecurrent(int B) {
+  const int S = sequences_;
+  TORCH_CHECK(S > 0 && B % S == 0, "the batch is not whole sequences (SetSequences)");
+  const int H = recurrent_size();
+  for (int s = 0; s < S; ++s) {
+    for (int j = 0; j < H; ++j) initial_states_columns_[j * S + s] = initial_states_[s][j];
+  }
+  const float* states =
+      gru_->ForwardSequences(features_.data(), initial_states_columns_.data(), reset_, B / S, S);
+  const std::size_t features = static_cast<std::size_t>(features_dim_) * B;
+  std::copy_n(features_.data(), features, trunk_input_.data());
+  std::copy_n(states, static_cast<std::size_t>(H) * B, trunk_input_.data() + features);
+}
+
+// d_trunk [features_dim + H, B]: the state rows go back through the GRU, whose input gradient
+// joins the feature rows.
+void FastActorCritic::BackwardRecurrent(float* d_trunk, int B) {
+  float* d_states = d_trunk + static_cast<std::ptrdiff_t>(features_dim_) * B;
+  gru_->BackwardSequences(features_.data(), d_states, d_gru_input_.data());
+  const int n = features_dim_ * B;
+  for (int i = 0; i < n; ++i) d_trunk[i] += d_gru_input_[i];
 }
 
 void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log_std, int B) {
-  float* d_actor_features = extractor_trainable_ ? d_features_actor_.data() : nullptr;
-  float* d_critic_features = extractor_trainable_ ? d_features_critic_.data() : nullptr;
-  actor_.Backward(features_.data(), d_mean, B, d_actor_features);
-  critic_.Backward(features_.data(), d_value, B, d_critic_features);
+  const bool input_gradient = extractor_trainable_ || gru_.has_value();
+  actor_.Backward(TrunkInput(), d_mean, B, input_gradient ? d_features_actor_.data() : nullptr);
+  critic_.Backward(TrunkInput(), d_value, B, input_gradient ? d_features_critic_.data() : nullptr);
   std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
+  if (!input_gradient) return;
+  // Both heads read the same input: their gradients add up.
+  const int n = actor_.in_size() * B;
+  for (int i = 0; i < n; ++i) d_features_actor_[i] += d_features_critic_[i];
+  if (gru_) BackwardRecurrent(d_features_actor_.data(), B);
   if (!extractor_trainable_) return;
-  // Both heads read the same features: their gradients add up (rows 6.. are the perception's).
-  float* d_encodings = d_features_actor_.data() + kNavigationSize * B;
-  const float* d_critic_encodings = d_features_critic_.data() + kNavigationSize * B;
-  const int n = (features_dim_ - kNavigationSize) * B;
-  for (int i = 0; i < n; ++i) d_encodings[i] += d_critic_encodings[i];
+  float* d_encodings = d_features_actor_.data() + kNavigationSize * B;  // the perception's rows
   // The scans share the stack's weights: one backward over all scans * B samples sums their
   // gradients. A single scan's rows are already in the stack's layout.
   float* d_perception = d_encodings;

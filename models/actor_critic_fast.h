@@ -15,10 +15,13 @@
 
 #include <torch/torch.h>
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "models/actor_critic.h"
 #include "models/actor_critic_kernels.h"
+#include "models/recurrent_fast.h"
 
 namespace colav {
 
@@ -62,11 +65,20 @@ class FastActorCritic {
   FastActorCritic(ActorCritic model, int max_batch);
 
   /// observations [B, observation_size] (row-major) -> action mean [B, 2] and value [B]
-  /// (row-major).
-  void Predict(const float* observations, int B, float* mean, float* value);
+  /// (row-major). A recurrent model also takes `states` [B, recurrent_size] (row-major), the
+  /// states before these observations, and replaces them by the states after.
+  void Predict(const float* observations, int B, float* mean, float* value,
+               float* states = nullptr);
   /// Extractor output of `count` observations [count, observation_size] -> features
   /// [count, features_dim] (row-major); any count.
   void Features(const float* observations, int count, float* features);
+
+  /// For a recurrent model, before a training forward: its B samples are `sequences` sequences
+  /// of B / sequences consecutive steps, in time-major order (sample t * sequences + s is step t of
+  /// sequence s); initial_states[s] points to the state (recurrent_size values) before step 0 of
+  /// sequence s; reset[t * sequences + s] != 0 where an episode starts (its state is 0 there).
+  /// The pointers must stay valid until the backward.
+  void SetSequences(const float* const* initial_states, const std::uint8_t* reset, int sequences);
 
   /// Training forward of the B samples whose observation rows (length observation_size) are
   /// `rows`.
@@ -92,10 +104,16 @@ class FastActorCritic {
   const float* log_std() const { return log_std_.data_ptr<float>(); }
   /// Whether the environment gets tanh of the sampled actions (ActorCriticOptions::squash_actions).
   bool squash_actions() const { return model_->options().squash_actions; }
+  /// The GRU state's size; 0 for a memoryless model.
+  int recurrent_size() const { return static_cast<int>(model_->options().recurrent_size); }
 
  private:
   void ForwardExtractor(const float* const* rows, int B);
   void ForwardFromFeatures(int B);
+  /// The trunks' input of the last forward: features_, or [features; GRU states] when recurrent.
+  const float* TrunkInput() const { return gru_ ? trunk_input_.data() : features_.data(); }
+  void ForwardRecurrent(int B);
+  void BackwardRecurrent(float* d_trunk, int B);
   torch::Tensor GradientOf(const torch::Tensor& parameter) const;
   FastLayer Bind(FastLayer::Kind kind, const torch::Tensor& weight, const torch::Tensor& bias,
                  FastLayer::Activation activation) const;
@@ -113,8 +131,18 @@ class FastActorCritic {
   std::vector<const float*> rows_;       // observation rows of Predict and Features
   std::vector<float> perception_input_;  // [180, scans * B]
   std::vector<float> features_;          // [features_dim, B]
-  std::vector<float> d_features_actor_, d_features_critic_;
-  std::vector<float> d_perception_;  // [P, scans * B], for scans > 1
+  std::vector<float> trunk_input_;       // [features_dim + recurrent_size, B], recurrent only
+  std::vector<float> d_features_actor_, d_features_critic_;  // [trunk input width, B]
+  std::vector<float> d_perception_;                          // [P, scans * B], for scans > 1
+  std::optional<FastGru> gru_;                               ///< recurrent models only
+  // The sequences of the next training forward (SetSequences), and their initial states
+  // [recurrent_size, sequences].
+  const float* const* initial_states_ = nullptr;
+  const std::uint8_t* reset_ = nullptr;
+  int sequences_ = 0;
+  std::vector<float> initial_states_columns_;
+  std::vector<const float*> state_rows_;  // Predict's states
+  std::vector<float> d_gru_input_;        // [features_dim, B]
   const float* mean_ = nullptr;
   const float* value_ = nullptr;
 };

@@ -136,6 +136,85 @@ INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticPredictTest,
                                            std::tuple{ExtractorKind::kBaseline, 3},
                                            std::tuple{ExtractorKind::kVaeDeep, 3}));
 
+// A recurrent model on 3 sequences of 4 steps (time-major samples), an episode starting at step 2
+// of sequence 1: the fast passes against autograd through forward_recurrent step by step.
+class FastRecurrentTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool>> {};
+
+TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
+  const auto [kind, locked] = GetParam();
+  constexpr int kSequences = 3, kSteps = 4, kState = 5, B = kSequences * kSteps;
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options = Options(kind, directory.path(), locked);
+  options.recurrent_size = kState;
+  ActorCritic model(options);
+  FastActorCritic fast(model, kBatch);
+  ASSERT_EQ(fast.recurrent_size(), kState);
+
+  const torch::Tensor obs = Observations(B, model);
+  const torch::Tensor initial = torch::randn({kSequences, kState});
+  std::vector<std::uint8_t> reset(B, 0);
+  reset[2 * kSequences + 1] = 1;
+  const torch::Tensor grad_mean = torch::randn({B, kActionSize});
+  const torch::Tensor grad_value = torch::randn({B});
+  const torch::Tensor grad_log_std = torch::randn({kActionSize});
+  torch::Tensor state = initial;
+  std::vector<torch::Tensor> means, values;
+  for (int t = 0; t < kSteps; ++t) {
+    torch::Tensor keep = torch::ones({kSequences, 1});
+    for (int s = 0; s < kSequences; ++s) keep[s][0] = reset[t * kSequences + s] ? 0.0f : 1.0f;
+    auto [mean, value, next] =
+        model->forward_recurrent(obs.narrow(0, t * kSequences, kSequences), state * keep);
+    means.push_back(mean);
+    values.push_back(value);
+    state = next;
+  }
+  const torch::Tensor mean = torch::cat(means), value = torch::cat(values);
+  const torch::Tensor loss = (mean * grad_mean).sum() + (value.squeeze(1) * grad_value).sum() +
+                             (model->log_std() * grad_log_std).sum();
+  loss.backward();
+
+  std::vector<const float*> rows(B), initial_rows(kSequences);
+  for (int b = 0; b < B; ++b) rows[b] = obs[b].data_ptr<float>();
+  for (int s = 0; s < kSequences; ++s) initial_rows[s] = initial[s].data_ptr<float>();
+  std::vector<float> features(static_cast<std::size_t>(B) * fast.features_dim());
+  fast.SetSequences(initial_rows.data(), reset.data(), kSequences);
+  if (fast.extractor_trainable()) {
+    fast.ForwardObservations(rows.data(), B);
+  } else {
+    fast.Features(obs.data_ptr<float>(), B, features.data());
+    for (int b = 0; b < B; ++b) rows[b] = &features[b * fast.features_dim()];
+    fast.ForwardFeatures(rows.data(), B);
+  }
+  ExpectClose(fast.mean(), mean.t(), 1e-5, "mean");
+  ExpectClose(fast.value(), value, 1e-5, "value");
+  torch::Tensor d_mean = grad_mean.t().contiguous();
+  torch::Tensor d_value = grad_value.clone();
+  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
+                B);
+  const auto parameters = model->TrainableParameters();
+  ASSERT_EQ(fast.gradients().size(), parameters.size());
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    ExpectClose(fast.gradients()[i].data_ptr<float>(), parameters[i].grad(), 1e-4,
+                "gradient " + std::to_string(i));
+  }
+
+  // Predict: one step of each row from its state, the states replaced by the next ones.
+  torch::NoGradGuard no_grad;
+  const torch::Tensor batch = obs.narrow(0, 0, kSequences);
+  torch::Tensor states = initial.clone();
+  std::vector<float> predicted_mean(kSequences * kActionSize), predicted_value(kSequences);
+  fast.Predict(batch.data_ptr<float>(), kSequences, predicted_mean.data(), predicted_value.data(),
+               states.data_ptr<float>());
+  const auto [step_mean, step_value, step_state] = model->forward_recurrent(batch, initial);
+  ExpectClose(predicted_mean.data(), step_mean, 1e-5, "predicted mean");
+  ExpectClose(predicted_value.data(), step_value, 1e-5, "predicted value");
+  ExpectClose(states.data_ptr<float>(), step_state, 1e-5, "next states");
+}
+
+INSTANTIATE_TEST_SUITE_P(Extractors, FastRecurrentTest,
+                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
+                                           std::tuple{ExtractorKind::kVaeShallow, true}));
+
 TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   std::vector<float> x;
   for (float v = -12.0f; v <= 12.0f; v += 0.001f) x.push_back(v);

@@ -49,6 +49,17 @@ void WriteRolloutStart(torch::serialize::OutputArchive& archive, const RolloutSt
   }
   archive.write(prefix + "navigation_moments",
                 torch::tensor(navigation, torch::kFloat64).reshape({kNavigationSize, 3}));
+  if (!start.policy_states.empty()) {  // memoryless runs' files stay as they were
+    archive.write(prefix + "policy_states", torch::tensor(start.policy_states, torch::kFloat32));
+  }
+}
+
+// Absent for memoryless policies: empty.
+std::vector<float> ReadPolicyStates(torch::serialize::InputArchive& archive) {
+  torch::Tensor stored;
+  if (!archive.try_read(std::string(kRolloutStartPrefix) + "policy_states", stored)) return {};
+  stored = stored.to(torch::kFloat32).contiguous();
+  return {stored.data_ptr<float>(), stored.data_ptr<float>() + stored.numel()};
 }
 
 // Absent from state files written before navigation normalisation existed: then the initial
@@ -112,6 +123,7 @@ RolloutStart ReadRolloutStart(torch::serialize::InputArchive& archive,
   }
   start.reward_scaling = ReadRewardScaling(archive);
   start.navigation_moments = ReadNavigationMoments(archive);
+  start.policy_states = ReadPolicyStates(archive);
   const bool navigation_consistent =
       std::all_of(start.navigation_moments.begin(), start.navigation_moments.end(),
                   [](const RunningVariance& m) { return m.variance >= 0.0 && m.count > 0.0; });

@@ -6,7 +6,8 @@
 // A checkpoint can fall inside a rollout (every checkpoint_interval steps, or on SIGKILL the last
 // one). The weights and the Adam state do not change within a rollout, so the state file also
 // records the start of the rollout in progress (RolloutStart: counters, sampling generator, the
-// worlds' histories, the reward scaler, the navigation moments); a resumed run replays that rollout
+// worlds' histories, the reward scaler, the navigation moments, a recurrent policy's states); a
+// resumed run replays that rollout
 // and so ends bit for bit where an uninterrupted run does.
 #pragma once
 
@@ -44,6 +45,9 @@ struct RolloutStart {
   RewardScalingState reward_scaling;
   /// The navigation normaliser's (the initial moments in a state file from before it existed).
   NavigationNormalizer::Moments navigation_moments;
+  /// A recurrent policy's state in each world, [n_envs * state size] (empty: memoryless, or
+  /// before the first rollout; then every state starts at 0).
+  std::vector<float> policy_states;
 };
 
 /// Path of the training state in a run folder.

@@ -114,6 +114,18 @@ void RequireRolloutSizes(PpoRunOptions& options) {
   }
 }
 
+// A recurrent policy's minibatches are whole sequences of whole rollouts.
+void RequireWholeSequences(PpoRunOptions& options) {
+  const PpoOptions& ppo = options.ppo;
+  if (options.model.recurrent_size == 0) return;
+  if (ppo.n_steps % ppo.sequence_length != 0 || ppo.batch_size % ppo.sequence_length != 0) {
+    throw UserError(fmt::format(
+        "ppo.sequence_length = {} must divide ppo.n_steps ({}) and ppo.batch_size ({}) for a "
+        "recurrent policy (policy.recurrent_size = {})",
+        ppo.sequence_length, ppo.n_steps, ppo.batch_size, options.model.recurrent_size));
+  }
+}
+
 // A curriculum whose second stage no world would play.
 void RequireSecondWorldsShare(PpoRunOptions& options) {
   if (options.second_worlds_from_step > 0 &&
@@ -178,6 +190,12 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "ppo.gae_lambda", [](Run & o) -> auto& { return o.ppo.gae_lambda; }, "GAE lambda", 0.0,
           1.0)
       .Number(
+          "ppo.sequence_length", [](Run & o) -> auto& { return o.ppo.sequence_length; },
+          "recurrent policies: steps per sequence of a minibatch (ppo.batch_size / this "
+          "sequences, backpropagated through their steps); must divide ppo.n_steps and "
+          "ppo.batch_size",
+          1, 1 << 20)
+      .Number(
           "ppo.clip_range", [](Run & o) -> auto& { return o.ppo.loss.clip_range; },
           "PPO clip range", 0.0, 10.0)
       .Number(
@@ -223,6 +241,11 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Number(
           "policy.log_std_init", [](Run & o) -> auto& { return o.model.log_std_init; },
           "initial log std of the action distribution (std e^-10 to e^2)", -10.0, 2.0)
+      .Number(
+          "policy.recurrent_size", [](Run & o) -> auto& { return o.model.recurrent_size; },
+          "size of the memory: a GRU between the extractor and the actor and critic, whose state "
+          "(0 at each episode's start) both read beside the features; 0: none (the paper's)",
+          0, 1024)
       .Bool(
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
           "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "
@@ -283,6 +306,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireSecondWorldsShare)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
+      .Then(RequireWholeSequences)
       .Then(DeriveModelSettings);
   return binding;
 }

@@ -22,6 +22,10 @@ struct PpoOptions {
   int n_steps = 1024;  ///< per environment and rollout
   int batch_size = 32;
   int n_epochs = 4;
+  /// Recurrent policies (policy.recurrent_size > 0): each minibatch is batch_size /
+  /// sequence_length sequences of this many consecutive steps of one world, backpropagated
+  /// through their steps from the state the rollout recorded at their first.
+  int sequence_length = 16;
   double gamma = 0.999;
   double gae_lambda = 0.98;
   double max_grad_norm = 0.5;

@@ -46,6 +46,7 @@ void RolloutCollector::ReplaceWorlds(const std::vector<TrainingScenarioConfig>& 
   env_ = std::make_unique<BatchedEnvironment>(config_, world_scenarios, threads_, env_seed_);
   env_->Restore(next_episodes);
   reward_scaler_.RestartReturns();
+  std::fill(states_.begin(), states_.end(), 0.0f);  // every world starts an episode
   SeeObservations(true);
 }
 
@@ -90,10 +91,14 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   }
   const float* epsilon = noise.data_ptr<float>();
   const bool squash = policy.squash_actions();
+  const int H = policy.recurrent_size();
+  if (states_.size() != static_cast<std::size_t>(N) * H) states_.assign(N * H, 0.0f);
+  float* states = H > 0 ? states_.data() : nullptr;
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
     std::copy_n(SeenObservations(), N * env_->observation_size(), observations);
-    policy.Predict(observations, N, mean_.data(), buffer.values(t));
+    std::copy(states_.begin(), states_.end(), buffer.states(t));
+    policy.Predict(observations, N, mean_.data(), buffer.values(t), states);
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
       // log N(a; mean, std) with a = mean + std * eps only depends on eps.
@@ -130,9 +135,14 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
       std::copy_n(env_->rewards(), N, buffer.rewards(t));
     }
     ValueFinalObservations(policy, t, buffer);
+    for (int e = 0; e < N; ++e) {
+      if (buffer.dones(t)[e] != 0) std::fill_n(states_.begin() + e * H, H, 0.0f);
+    }
     if (!after_step(finished_)) return false;
   }
-  policy.Predict(SeenObservations(), N, mean_.data(), buffer.last_values());
+  scratch_states_ = states_;  // the next rollout starts from states_ again
+  policy.Predict(SeenObservations(), N, mean_.data(), buffer.last_values(),
+                 H > 0 ? scratch_states_.data() : nullptr);
   return true;
 }
 
@@ -149,7 +159,11 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
     if (rules_.normalize_navigation) {
       navigation_normalizer_.Normalize(final_observation_.data(), 1, env_->observation_size());
     }
-    policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data());
+    // From the state the episode's last step left (a copy: the world starts afresh).
+    const int H = policy.recurrent_size();
+    scratch_states_.assign(states_.begin() + e * H, states_.begin() + (e + 1) * H);
+    policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data(),
+                   H > 0 ? scratch_states_.data() : nullptr);
     buffer.final_values(t)[e] = scratch_values_[0];
   }
 }

@@ -5,7 +5,8 @@
 // new policy at a stored sample, so PPO's probability ratio does not change), a truncated episode's
 // final observation is valued for bootstrapping (BootstrapsFromFinalObservation), and optionally
 // the rewards are scaled (reward_scaling.h) and the navigation values the policy sees normalised
-// (navigation_normalizer.h).
+// (navigation_normalizer.h). A recurrent policy's state is kept per world, recorded in the buffer
+// before each step and set to 0 when the world's episode ends.
 #pragma once
 
 #include <torch/torch.h>
@@ -89,6 +90,10 @@ class RolloutCollector {
   void RestoreNavigationMoments(const NavigationNormalizer::Moments& moments);
   /// What the policy applies to raw navigation values now; none when they are not normalised.
   std::optional<NavigationNormalization> navigation_normalization() const;
+  /// A recurrent policy's state in each world before its current observation, [n_envs, state
+  /// size] (a checkpoint's record; empty before the first rollout and for a memoryless policy).
+  const std::vector<float>& policy_states() const { return states_; }
+  void RestorePolicyStates(const std::vector<float>& states) { states_ = states; }
 
   /// Wall time spent stepping the worlds so far (s).
   double env_seconds() const { return env_seconds_; }
@@ -112,6 +117,8 @@ class RolloutCollector {
   std::vector<float> normalized_observations_;  ///< with navigation normalisation only
   std::vector<float> final_observation_;
   std::vector<float> mean_, bounded_actions_, scratch_values_, scratch_means_;
+  std::vector<float> states_;          ///< a recurrent policy's, [n_envs, state size]
+  std::vector<float> scratch_states_;  ///< states_ copied, for values that must not advance it
   std::vector<FinishedEpisode> finished_;
   double env_seconds_ = 0.0;
 };

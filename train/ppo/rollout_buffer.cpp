@@ -6,10 +6,11 @@
 
 namespace colav {
 
-RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size)
+RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size)
     : num_steps_(num_steps),
       num_envs_(num_envs),
       observation_size_(observation_size),
+      state_size_(state_size),
       observations_(static_cast<std::size_t>(size()) * observation_size),
       actions_(static_cast<std::size_t>(size()) * kActionSize),
       log_probs_(size()),
@@ -20,7 +21,8 @@ RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size)
       bootstrapped_(size()),
       last_values_(num_envs),
       advantages_(size()),
-      returns_(size()) {}
+      returns_(size()),
+      states_(static_cast<std::size_t>(size()) * state_size) {}
 
 void RolloutBuffer::ComputeReturnsAndAdvantages(double gamma, double lambda) {
   GaeInput input;

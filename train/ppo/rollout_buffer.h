@@ -13,8 +13,9 @@ namespace colav {
 
 class RolloutBuffer {
  public:
-  /// observation_size: floats per observation row (ObservationSize of the environment).
-  RolloutBuffer(int num_steps, int num_envs, int observation_size);
+  /// observation_size: floats per observation row (ObservationSize of the environment);
+  /// state_size: the recurrent policy's state size (0: memoryless).
+  RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size = 0);
 
   int num_steps() const { return num_steps_; }
   int num_envs() const { return num_envs_; }
@@ -30,6 +31,8 @@ class RolloutBuffer {
   std::uint8_t* dones(int t) { return &dones_[Offset(t, 1)]; }
   std::uint8_t* bootstrapped(int t) { return &bootstrapped_[Offset(t, 1)]; }
   float* final_values(int t) { return &final_values_[Offset(t, 1)]; }
+  /// A recurrent policy's state before step t (0 where an episode starts), state_size each.
+  float* states(int t) { return states_.data() + Offset(t, state_size_); }
   /// V of the observations after the last step, one per world.
   float* last_values() { return last_values_.data(); }
 
@@ -46,6 +49,9 @@ class RolloutBuffer {
   const std::vector<float>& values() const { return values_; }
   const std::vector<float>& advantages() const { return advantages_; }
   const std::vector<float>& returns() const { return returns_; }
+  const std::vector<float>& states() const { return states_; }
+  const std::vector<std::uint8_t>& dones() const { return dones_; }
+  int state_size() const { return state_size_; }
 
  private:
   std::size_t Offset(int t, int width) const {
@@ -55,9 +61,11 @@ class RolloutBuffer {
   int num_steps_;
   int num_envs_;
   int observation_size_;
+  int state_size_;
   std::vector<float> observations_, actions_, log_probs_, values_, rewards_, final_values_;
   std::vector<std::uint8_t> dones_, bootstrapped_;
   std::vector<float> last_values_, advantages_, returns_;
+  std::vector<float> states_;
 };
 
 }  // namespace colav

@@ -78,7 +78,8 @@ class PpoTrainer {
                     options_.normalize_navigation}),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
-        buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env)) {
+        buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env),
+                static_cast<int>(options.model.recurrent_size)) {
     updater_.set_n_updates(counters_.n_updates);
     if (resume) ContinueFromRolloutStart();
   }
@@ -179,6 +180,12 @@ class PpoTrainer {
         collector_.RestoreRewardScaling(rollout_start_.reward_scaling);
       }
       collector_.RestoreNavigationMoments(rollout_start_.navigation_moments);
+      const std::size_t states = rollout_start_.policy_states.size();
+      if (states != 0 && states != static_cast<std::size_t>(options_.n_envs) *
+                                       updater_.policy().recurrent_size()) {
+        throw std::invalid_argument(std::to_string(states) + " policy state values");
+      }
+      collector_.RestorePolicyStates(rollout_start_.policy_states);
     } catch (const std::invalid_argument& error) {
       throw UserError("training state '" + TrainingStatePath(run_dir_).string() +
                       "' does not fit the configured worlds: " + error.what());
@@ -195,6 +202,7 @@ class PpoTrainer {
     rollout_start_.worlds = collector_.world_histories();
     rollout_start_.reward_scaling = collector_.reward_scaling();
     rollout_start_.navigation_moments = collector_.navigation_moments();
+    rollout_start_.policy_states = collector_.policy_states();
   }
 
   // A curriculum's second-stage worlds, while a run at `step` has them still to come.

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "models/actor_critic_kernels.h"
+#include "train/ppo/sequence_minibatches.h"
 
 namespace colav {
 
@@ -37,6 +38,16 @@ PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t*
   return {B, actions_.data(), old_log_probs_.data(), advantages_.data(), returns_.data()};
 }
 
+void PpoUpdater::SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
+  const int S = B / options_.sequence_length;
+  initial_states_.resize(S);
+  for (int s = 0; s < S; ++s) {
+    initial_states_[s] = buffer.states().data() + indices[s] * buffer.state_size();
+  }
+  EpisodeStartsInSequences(buffer, indices, B, options_.sequence_length, resets_);
+  policy_.SetSequences(initial_states_.data(), resets_.data(), S);
+}
+
 UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& generator) {
   const int n = buffer.size();
   if (!policy_.extractor_trainable()) {
@@ -48,13 +59,22 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
   int minibatches = 0;
   float d_log_std[kActionSize];
   for (int epoch = 0; epoch < options_.n_epochs; ++epoch) {
-    const torch::Tensor permutation = torch::randperm(n, generator, torch::kLong);
-    const std::int64_t* order = permutation.data_ptr<std::int64_t>();
+    const bool recurrent = policy_.recurrent_size() > 0;
+    const torch::Tensor permutation =
+        recurrent ? torch::Tensor() : torch::randperm(n, generator, torch::kLong);
+    if (recurrent) {
+      sequence_order_ =
+          SequenceMinibatchOrder(buffer.num_steps(), buffer.num_envs(), options_.sequence_length,
+                                 options_.batch_size, generator);
+    }
+    const std::int64_t* order =
+        recurrent ? sequence_order_.data() : permutation.data_ptr<std::int64_t>();
     double epoch_kl = 0.0;
     int epoch_minibatches = 0;
     for (int start = 0; start < n; start += options_.batch_size) {
       const int B = std::min(options_.batch_size, n - start);
       const PpoMinibatch batch = Gather(buffer, order + start, B);
+      if (recurrent) SetSequences(buffer, order + start, B);
       if (policy_.extractor_trainable()) {
         policy_.ForwardObservations(rows_.data(), B);
       } else {

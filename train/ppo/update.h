@@ -1,7 +1,8 @@
 // The PPO update of one rollout (SB3 PPO.train, reference-learning 6.4): n_epochs passes over the
 // rollout in shuffled minibatches; per minibatch the clipped-surrogate loss, its gradients through
 // the hand-written backward pass, global gradient-norm clipping and one Adam step over the
-// trainable parameters.
+// trainable parameters. A recurrent policy's minibatches are whole sequences of consecutive steps
+// (sequence_minibatches.h), each starting from the state the rollout recorded.
 #pragma once
 
 #include <torch/torch.h>
@@ -47,6 +48,9 @@ class PpoUpdater {
 
  private:
   PpoMinibatch Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
+  /// A recurrent policy's minibatch of `indices` (sequence_minibatches.h): the initial states and
+  /// the episode starts of its sequences.
+  void SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
   void CheckParametersFinite() const;
 
   PpoOptions options_;
@@ -57,6 +61,9 @@ class PpoUpdater {
   std::vector<const float*> rows_;
   std::vector<float> actions_, old_log_probs_, advantages_, returns_;
   std::vector<float> d_mean_, d_value_;
+  std::vector<std::int64_t> sequence_order_;
+  std::vector<const float*> initial_states_;
+  std::vector<std::uint8_t> resets_;
 };
 
 }  // namespace colav

@@ -194,11 +194,11 @@ TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
 struct RunsWithOption {
   std::filesystem::path whole, pieces, plain;
 };
-RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::path& directory,
-                               const std::string& value = "true") {
+RunsWithOption TrainWithOptions(const std::vector<std::pair<std::string, std::string>>& settings,
+                                const std::filesystem::path& directory) {
   const auto with_key = [&](std::int64_t total_steps) {
     Config config = ShortEpisodes(total_steps);
-    config.Set(key, value, "test");
+    for (const auto& [key, value] : settings) config.Set(key, value, "test");
     return config;
   };
   const RunsWithOption runs{directory / "whole", directory / "pieces", directory / "plain"};
@@ -213,6 +213,19 @@ RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::pa
   EXPECT_TRUE(ReadFile(runs.whole / "episodes.csv") == ReadFile(runs.pieces / "episodes.csv"));
   EXPECT_TRUE(ReadFile(runs.whole / "policy.pt") == ReadFile(runs.pieces / "policy.pt"));
   return runs;
+}
+
+RunsWithOption TrainWithOption(const std::string& key, const std::filesystem::path& directory,
+                               const std::string& value = "true") {
+  return TrainWithOptions({{key, value}}, directory);
+}
+
+// A recurrent policy's states run across the rollouts (the episodes of 20 steps span them).
+TEST(PpoCheckpointTest, ExtendedRecurrentRunEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOptions(
+      {{"policy.recurrent_size", "4"}, {"ppo.sequence_length", "4"}}, directory.path());
+  EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
 }
 
 // The reward scaler's returns run across the rollouts and episodes.

@@ -127,5 +127,48 @@ TEST(RolloutCollectorTest, ReplacedWorldsStartTheirNextEpisodesInTheirNewKind) {
                          next.observations(0)));
 }
 
+// A recurrent policy: the buffer records each world's state before every step, 0 where its
+// episode starts (the worlds time out after 3 steps here) and otherwise the state the policy left
+// after the world's previous step; a curriculum's switch restarts every state.
+TEST(RolloutCollectorTest, ARecurrentPolicysStatesRunThroughEpisodesAndRestartAtTheirEnds) {
+  constexpr int kWorlds = 2, kSteps = 8, kState = 3;
+  constexpr std::uint64_t kSeed = 5;
+  EnvironmentConfig config;
+  config.max_steps = 3;
+  RolloutCollector collector(config, std::vector<TrainingScenarioConfig>(kWorlds), 1, kSeed,
+                             RolloutRules{});
+  ActorCriticOptions options;
+  options.recurrent_size = kState;
+  ActorCritic model(options);
+  FastActorCritic policy(model, kWorlds);
+  FastActorCritic by_hand(model, 1);
+  const int width = ObservationSize(config);
+  RolloutBuffer buffer(kSteps, kWorlds, width, kState);
+  collector.Collect(policy, torch::randn({kSteps, kWorlds, kActionSize}), buffer,
+                    [](const std::vector<FinishedEpisode>&) { return true; });
+  int starts = 0;
+  for (int t = 0; t < kSteps; ++t) {
+    for (int e = 0; e < kWorlds; ++e) {
+      const float* recorded = buffer.states(t) + e * kState;
+      std::vector<float> expected(kState, 0.0f);
+      if (t > 0 && buffer.dones(t - 1)[e] == 0) {
+        expected.assign(buffer.states(t - 1) + e * kState, buffer.states(t - 1) + (e + 1) * kState);
+        float mean[kActionSize], value;
+        by_hand.Predict(buffer.observations(t - 1) + e * width, 1, mean, &value, expected.data());
+      }
+      starts += t > 0 && buffer.dones(t - 1)[e] != 0;
+      for (int j = 0; j < kState; ++j) {
+        EXPECT_NEAR(recorded[j], expected[j], 1e-6) << "step " << t << " world " << e;
+      }
+      if (t > 0 && buffer.dones(t - 1)[e] == 0) {
+        EXPECT_GT(std::abs(recorded[0]) + std::abs(recorded[1]) + std::abs(recorded[2]), 0.0f);
+      }
+    }
+  }
+  EXPECT_EQ(starts, 2 * kWorlds);  // after steps 2 and 5
+  collector.ReplaceWorlds(std::vector<TrainingScenarioConfig>(kWorlds));
+  EXPECT_EQ(collector.policy_states(), std::vector<float>(kWorlds * kState, 0.0f));
+}
+
 }  // namespace
 }  // namespace colav
