@@ -36,16 +36,21 @@ void StepLane(Lane& lane, const float* action) {
   }
 }
 
-// The actions for the given rows of a policy's observation batch. At least two rows go through
-// the policy: for a single row LibTorch takes a matrix-vector path whose rounding differs, and an
+// The actions for the given rows of a policy's observation batch; a recurrent policy reads the
+// same rows of `states` and writes their next states back. At least two rows go through the
+// policy: for a single row LibTorch takes a matrix-vector path whose rounding differs, and an
 // episode's result would depend on whether it happened to run last.
-torch::Tensor ActOnRows(Policy& policy, const torch::Tensor& observations,
+torch::Tensor ActOnRows(Policy& policy, const torch::Tensor& observations, torch::Tensor& states,
                         std::vector<std::int64_t> rows) {
   const std::int64_t count = static_cast<std::int64_t>(rows.size());
   if (count == 1) rows.push_back(rows.front());
-  return policy.Act(observations.index_select(0, torch::tensor(rows)))
-      .slice(0, 0, count)
-      .contiguous();
+  const torch::Tensor index = torch::tensor(rows);
+  const torch::Tensor batch = observations.index_select(0, index);
+  if (!policy.recurrent()) return policy.Act(batch).slice(0, 0, count).contiguous();
+  torch::Tensor row_states = states.index_select(0, index);
+  const torch::Tensor actions = policy.Step(batch, row_states);
+  states.index_copy_(0, index.slice(0, 0, count), row_states.slice(0, 0, count));
+  return actions.slice(0, 0, count).contiguous();
 }
 
 // Lanes (worlds) alive at once, at most: each world holds its path's dense polyline and its
@@ -63,12 +68,16 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
   const int num_models = last - first;
   const int num_episodes = static_cast<int>(episodes.size());
   std::vector<torch::Tensor> observations;
+  std::vector<torch::Tensor> states(num_models);  // a recurrent policy's, row e for episode e
   std::vector<Lane> lanes(static_cast<std::size_t>(num_models) * num_episodes);
   for (int m = 0; m < num_models; ++m) {
     const EnvironmentConfig policy_config = WithObservationSettings(
         config, policies[first + m].SettingsOr(ObservationSettingsOf(config)));
     const int observation_size = ObservationSize(policy_config);
     observations.push_back(torch::zeros({num_episodes, observation_size}));
+    if (policies[first + m].recurrent()) {
+      states[m] = policies[first + m].InitialStates(num_episodes);
+    }
     for (int e = 0; e < num_episodes; ++e) {
       Lane& lane = lanes[m * num_episodes + e];
       const EvaluationEpisode& episode = episodes[e];
@@ -94,7 +103,7 @@ std::vector<std::vector<EpisodeOutcome>> RunModelBlock(
         if (!lanes[m * num_episodes + e].done) active.push_back(e);
       }
       if (active.empty()) continue;
-      actions[m] = ActOnRows(policies[first + m], observations[m], active);
+      actions[m] = ActOnRows(policies[first + m], observations[m], states[m], active);
       for (std::size_t j = 0; j < active.size(); ++j) {
         work.emplace_back(&lanes[m * num_episodes + active[j]],
                           actions[m].data_ptr<float>() + j * kActionSize);

@@ -28,9 +28,10 @@ struct EpisodeOutcome {
 
 /// outcomes[m][e]: policy m on episode e, in the environment `config` under the policy's own
 /// observation settings (those of `config` for a policy that has none). Each time step, a policy's
-/// forward sees the observations of its unfinished episodes (at least two rows), so an episode's
-/// result does not depend on the other episodes when the policy's rows are computed independently
-/// of the batch size, as LibTorch's CPU kernels do for two rows and more.
+/// forward (a recurrent policy's step, with each episode's own state, initial at its start) sees
+/// the observations of its unfinished episodes (at least two rows), so an episode's result does
+/// not depend on the other episodes when the policy's rows are computed independently of the batch
+/// size, as LibTorch's CPU kernels do for two rows and more.
 /// `on_episode_done(finished, total)` is called from the calling thread after each time step in
 /// which episodes finished. With `record_replays`, each outcome holds its episode as a replay.
 std::vector<std::vector<EpisodeOutcome>> RunEpisodes(

@@ -1,6 +1,8 @@
 #include "eval/policy.h"
 
+#include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 #include "env/environment_spec.h"
@@ -33,6 +35,18 @@ std::string ShapeText(const torch::Tensor& tensor) {
   return text.str();
 }
 
+// The two tensors, as float32, of `output` when it is a tuple of two tensors.
+std::optional<std::pair<torch::Tensor, torch::Tensor>> FloatTensorPair(
+    const torch::IValue& output) {
+  if (!output.isTuple()) return std::nullopt;
+  const auto& elements = output.toTupleRef().elements();
+  if (elements.size() != 2 || !elements[0].isTensor() || !elements[1].isTensor()) {
+    return std::nullopt;
+  }
+  return std::pair{elements[0].toTensor().to(torch::kFloat32),
+                   elements[1].toTensor().to(torch::kFloat32)};
+}
+
 }  // namespace
 
 Policy::Policy(const std::filesystem::path& path, std::string name)
@@ -45,21 +59,53 @@ Policy::Policy(const std::filesystem::path& path, std::string name)
   } catch (const std::exception& error) {
     throw UserError(path.string() + ": not a TorchScript policy (" + OneLineReason(error) + ")");
   }
-  if (!module_.find_method("forward")) {
+  ReadRecurrentSize();
+  if (!recurrent() && !module_.find_method("forward")) {
     throw UserError(path.string() + ": TorchScript module has no forward method");
   }
   module_.eval();
   ReadOwnSettings();
-  // Probe with two batch sizes: evaluation runs many episodes through one forward call.
+  // Probe with two batch sizes: evaluation runs many episodes through one call.
   const int observation_size = ObservationSize(SettingsOr(ObservationSettings{}));
-  for (const std::int64_t batch : {1, 2}) {
-    const torch::Tensor actions = Forward(torch::zeros({batch, observation_size}));
-    if (actions.dim() != 2 || actions.size(0) != batch || actions.size(1) != kActionSize) {
-      throw UserError(path.string() + ": forward(obs [" + std::to_string(batch) + ", " +
-                      std::to_string(observation_size) + "]) gave actions of shape " +
-                      ShapeText(actions) + ", expected [" + std::to_string(batch) + ", " +
-                      std::to_string(kActionSize) + "]");
+  for (const std::int64_t batch : {1, 2}) Probe(batch, observation_size);
+}
+
+void Policy::ReadRecurrentSize() {
+  if (!module_.hasattr("recurrent_size")) return;
+  const torch::IValue size = module_.attr("recurrent_size");
+  if (!size.isInt() || size.toInt() < 0) {
+    throw UserError(path_.string() + ": attribute recurrent_size must be an int >= 0");
+  }
+  recurrent_size_ = static_cast<int>(size.toInt());
+  if (!recurrent()) return;
+  for (const char* method : {"initial_state", "step"}) {
+    if (!module_.find_method(method)) {
+      throw UserError(path_.string() + ": recurrent policy (recurrent_size " +
+                      std::to_string(recurrent_size_) + ") has no " + method + " method");
     }
+  }
+}
+
+void Policy::Probe(std::int64_t batch, int observation_size) {
+  const torch::Tensor observations = torch::zeros({batch, observation_size});
+  const std::string call = "(obs " + ShapeText(observations);
+  if (!recurrent()) {
+    ExpectShape(Forward(observations), batch, kActionSize, "forward" + call + ") gave actions");
+    return;
+  }
+  torch::Tensor states = InitialStates(batch);
+  ExpectShape(states, batch, recurrent_size_,
+              "initial_state(" + std::to_string(batch) + ") gave states");
+  const torch::Tensor actions = Step(observations, states);
+  ExpectShape(actions, batch, kActionSize, "step" + call + ", state) gave actions");
+  ExpectShape(states, batch, recurrent_size_, "step" + call + ", state) gave next states");
+}
+
+void Policy::ExpectShape(const torch::Tensor& tensor, std::int64_t rows, std::int64_t columns,
+                         const std::string& what) const {
+  if (tensor.dim() != 2 || tensor.size(0) != rows || tensor.size(1) != columns) {
+    throw UserError(path_.string() + ": " + what + " of shape " + ShapeText(tensor) +
+                    ", expected [" + std::to_string(rows) + ", " + std::to_string(columns) + "]");
   }
 }
 
@@ -76,15 +122,19 @@ void Policy::ReadOwnSettings() {
   }
 }
 
-torch::Tensor Policy::Forward(const torch::Tensor& observations) {
-  torch::IValue output;
+torch::IValue Policy::Run(const std::string& method, std::vector<torch::IValue> inputs,
+                          const std::string& call) {
   try {
     c10::InferenceMode inference;
-    output = module_.forward({observations});
+    return module_.get_method(method)(std::move(inputs));
   } catch (const std::exception& error) {
-    throw UserError(path_.string() + ": forward(obs " + ShapeText(observations) +
-                    ") failed: " + OneLineReason(error));
+    throw UserError(path_.string() + ": " + call + " failed: " + OneLineReason(error));
   }
+}
+
+torch::Tensor Policy::Forward(const torch::Tensor& observations) {
+  const torch::IValue output =
+      Run("forward", {observations}, "forward(obs " + ShapeText(observations) + ")");
   if (!output.isTensor()) {
     throw UserError(path_.string() + ": forward must return one tensor of actions, got " +
                     output.tagKind());
@@ -97,7 +147,39 @@ torch::Tensor Policy::Forward(const torch::Tensor& observations) {
 }
 
 torch::Tensor Policy::Act(const torch::Tensor& observations) {
+  TORCH_CHECK(!recurrent(), path_.string(), ": a recurrent policy acts through Step");
   return Forward(observations).clamp(-1.0, 1.0);
+}
+
+torch::Tensor Policy::Step(const torch::Tensor& observations, torch::Tensor& states) {
+  TORCH_CHECK(recurrent(), path_.string(), ": a memoryless policy acts through Act");
+  const torch::IValue output =
+      Run("step", {observations, states},
+          "step(obs " + ShapeText(observations) + ", state " + ShapeText(states) + ")");
+  const std::optional<std::pair<torch::Tensor, torch::Tensor>> pair = FloatTensorPair(output);
+  if (!pair) {
+    throw UserError(path_.string() + ": step must return a tuple (actions, next states), got " +
+                    output.tagKind());
+  }
+  const auto& [actions, next_states] = *pair;
+  if (!torch::isfinite(actions).all().item<bool>() ||
+      !torch::isfinite(next_states).all().item<bool>()) {
+    throw UserError(path_.string() + ": step gave a non-finite action or state");
+  }
+  states = next_states;
+  return actions.clamp(-1.0, 1.0);
+}
+
+torch::Tensor Policy::InitialStates(std::int64_t batch) {
+  TORCH_CHECK(recurrent(), path_.string(), ": a memoryless policy has no state");
+  const torch::IValue output =
+      Run("initial_state", {batch}, "initial_state(" + std::to_string(batch) + ")");
+  if (!output.isTensor()) {
+    throw UserError(path_.string() + ": initial_state must return one tensor, got " +
+                    output.tagKind());
+  }
+  // A normal tensor, not an inference one: callers write next states into it in place.
+  return output.toTensor().to(torch::kFloat32).clone();
 }
 
 std::filesystem::path SidecarPath(const std::filesystem::path& policy) {

@@ -73,6 +73,67 @@ std::string DeterministicActionSource(const std::string& mean, const ActorCritic
                                         : "torch.clamp(" + mean + ", -1.0, 1.0)";
 }
 
+// Statements from the trunk input `f` to the return of the deterministic action, or of the value.
+std::string ActionReturnSource(ActorCriticImpl& model, const std::string& rest) {
+  return TrunkSource(model.mlp_extractor()->policy_net, "mlp_extractor.policy_net") +
+         "    return " + DeterministicActionSource(LinearSource("h", "action_net"), model) + rest +
+         "\n";
+}
+std::string ValueReturnSource(ActorCriticImpl& model, const std::string& rest) {
+  return TrunkSource(model.mlp_extractor()->value_net, "mlp_extractor.value_net") + "    return " +
+         LinearSource("h", "value_net") + rest + "\n";
+}
+
+std::string MemorylessSource(ActorCriticImpl& model) {
+  return "def forward(self, obs: Tensor) -> Tensor:\n"
+         "    f = self.features(obs)\n" +
+         ActionReturnSource(model, "") +
+         "def value(self, obs: Tensor) -> Tensor:\n"
+         "    f = self.features(obs)\n" +
+         ValueReturnSource(model, "");
+}
+
+// torch.nn.GRUCell (gates r, z, n), written out so that the file needs no module of its own.
+std::string RecurrentCellSource(std::int64_t size) {
+  const std::string h = std::to_string(size);
+  return "def recurrent_cell(self, x: Tensor, state: Tensor) -> Tensor:\n"
+         "    assert state.dim() == 2 and state.size(0) == x.size(0) and state.size(1) == " +
+         h + ", 'policy: states [B, " + h +
+         "] expected, one row per observation (initial_state(B) at an episode start)'\n"
+         "    gi = torch.addmm(self.recurrent_bias_ih, x, self.recurrent_weight_ih.t())\n"
+         "    gh = torch.addmm(self.recurrent_bias_hh, state, self.recurrent_weight_hh.t())\n"
+         "    i_r, i_z, i_n = gi.chunk(3, 1)\n"
+         "    h_r, h_z, h_n = gh.chunk(3, 1)\n"
+         "    r = torch.sigmoid(i_r + h_r)\n"
+         "    z = torch.sigmoid(i_z + h_z)\n"
+         "    n = torch.tanh(i_n + r * h_n)\n"
+         "    return (1 - z) * n + z * state\n";
+}
+
+// step and step_value: the GRU's next state `s`, then the trunks on [features, s].
+std::string RecurrentSource(ActorCriticImpl& model) {
+  const std::string size = std::to_string(model.options().recurrent_size);
+  const std::string next_state =
+      "    x = self.features(obs)\n"
+      "    s = self.recurrent_cell(x, state)\n"
+      "    f = torch.cat([x, s], 1)\n";
+  return RecurrentCellSource(model.options().recurrent_size) +
+         // The parameters' float32 (torch.float32 does not compile outside Python).
+         "def initial_state(self, batch: int) -> Tensor:\n"
+         "    return self.recurrent_bias_hh.new_zeros([batch, " +
+         size +
+         "])\n"
+         "def step(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
+         next_state + ActionReturnSource(model, ", s") +
+         "def step_value(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
+         next_state + ValueReturnSource(model, ", s") +
+         // Acting from a zero state at every call would look like a policy and be a worse one.
+         // (An assert: builtin exceptions such as RuntimeError only compile from Python.)
+         "def forward(self, obs: Tensor) -> Tensor:\n"
+         "    assert False, 'recurrent policy: call step(obs, state) starting from "
+         "initial_state(B)'\n";
+}
+
 // A float32 tensor [kNavigationSize] of `values`.
 torch::Tensor NavigationTensor(const std::array<float, kNavigationSize>& values) {
   return torch::tensor(at::ArrayRef<float>(values), torch::kFloat32);
@@ -98,16 +159,13 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
   script.register_attribute("observation_layout", c10::StringType::get(),
                             ObservationLayoutText(settings));
   RecordObservationSettings(script, settings);
-  script.define(FeaturesSource(*model.features_extractor(), navigation.has_value()) +
-                "def forward(self, obs: Tensor) -> Tensor:\n"
-                "    f = self.features(obs)\n" +
-                TrunkSource(model.mlp_extractor()->policy_net, "mlp_extractor.policy_net") +
-                "    return " + DeterministicActionSource(LinearSource("h", "action_net"), model) +
-                "\n" +
-                "def value(self, obs: Tensor) -> Tensor:\n"
-                "    f = self.features(obs)\n" +
-                TrunkSource(model.mlp_extractor()->value_net, "mlp_extractor.value_net") +
-                "    return " + LinearSource("h", "value_net") + "\n");
+  if (model.options().recurrent_size > 0) {
+    script.register_attribute("recurrent_size", c10::IntType::get(),
+                              model.options().recurrent_size);
+  }
+  script.define(
+      FeaturesSource(*model.features_extractor(), navigation.has_value()) +
+      (model.options().recurrent_size > 0 ? RecurrentSource(model) : MemorylessSource(model)));
   return script;
 }
 

@@ -18,6 +18,14 @@
 //   global_step (int), observation_layout (str, the line above for the closeness transform trained
 //   with), observation_settings (str, the settings trained with,
 //   models/observation_settings_record.h).
+// A recurrent policy (ActorCriticOptions::recurrent_size H > 0) also has the attribute
+// recurrent_size (int, H; memoryless policies have none) and acts through its state instead:
+//   initial_state(batch: int) -> zeros float32 [batch, H], the state at an episode's start;
+//   step(obs, state [B, H]) -> Tuple[action [B, 2], next state [B, H]], the action as forward's;
+//   step_value(obs, state) -> Tuple[value [B, 1], next state [B, H]];  features(obs) as above.
+//   Its forward(obs) fails with "AssertionError: recurrent policy: call step(obs, state) starting
+//   from initial_state(B)" (acting from a zero state at every step would be a different, worse
+//   policy) and it has no value(obs). The GRU cell is recurrent_cell(x, state).
 // A parameter `a.b.c` of the ActorCritic is the attribute `a_b_c` of the scripted module.
 #pragma once
 

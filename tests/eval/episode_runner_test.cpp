@@ -38,6 +38,10 @@ class EpisodeRunnerTest : public ::testing::Test {
   Policy Reactive(std::uint64_t seed, const std::string& name) {
     return Policy(tp::SavePolicy(tp::ReactivePolicy(seed), folder_ / (name + ".pt")), name);
   }
+  Policy RecurrentReactive(std::uint64_t seed, const std::string& name) {
+    return Policy(tp::SavePolicy(tp::RecurrentReactivePolicy(seed), folder_ / (name + ".pt")),
+                  name);
+  }
   TemporaryFolder folder_;
 };
 
@@ -97,6 +101,48 @@ TEST_F(EpisodeRunnerTest, RecordsTheTrackAndTheCumulativeReward) {
     EXPECT_GT(outcome.metrics.path_length, 250.0);
   }
   EXPECT_EQ(outcomes[0][0].positions.front(), episodes[0].scenario.vessel_position);
+}
+
+using Actions = std::vector<std::array<float, kActionSize>>;
+
+// `episode` stepped by hand with `policy`, its state carried from InitialStates: the episode's row
+// goes through step twice, as the runner never forwards a single row.
+Actions RecurrentActionsByHand(Policy& policy, const EvaluationEpisode& episode) {
+  Environment env(ShortTestEpisodes(), std::make_shared<FixedScenarioSource>(episode.scenario));
+  torch::Tensor observation = torch::zeros({1, ObservationSize(ShortTestEpisodes())});
+  env.Reset(episode.seed.value_or(0), observation.data_ptr<float>());
+  torch::Tensor states = policy.InitialStates(2);
+  Actions actions;
+  for (bool done = false; !done;) {
+    const torch::Tensor action = policy.Step(observation.repeat({2, 1}), states)[0];
+    actions.push_back({action[0].item<float>(), action[1].item<float>()});
+    const double values[kActionSize] = {actions.back()[0], actions.back()[1]};
+    done = env.Step(values, observation.data_ptr<float>()).episode.has_value();
+  }
+  return actions;
+}
+
+void ExpectSameActions(const Actions& actual, const Actions& expected, const std::string& what) {
+  ASSERT_EQ(actual.size(), expected.size()) << what;
+  for (std::size_t k = 0; k < actual.size(); ++k) {
+    ASSERT_EQ(actual[k], expected[k]) << what << ", step " << k;
+  }
+}
+
+// Each episode keeps its own state, from zero at its start, whatever the other rows do: the
+// batch's actions are those of the episode alone and those of a hand-carried state, also after
+// an episode has ended and the rows of the later ones have moved up.
+TEST_F(EpisodeRunnerTest, ARecurrentPolicyKeepsOneStatePerEpisode) {
+  const auto episodes = TestEpisodes(3, 5);
+  std::vector<Policy> policies = {RecurrentReactive(1, "r")};
+  const auto batch = RunEpisodes(policies, episodes, ShortTestEpisodes(), 2);
+  ASSERT_LT(batch[0][3].metrics.steps, batch[0][4].metrics.steps) << "the batch must shrink";
+  const auto alone = RunEpisodes(policies, {episodes[4]}, ShortTestEpisodes(), 1);
+  ExpectSameActions(alone[0][0].actions, batch[0][4].actions, "episode 4 alone");
+  for (std::size_t e = 0; e < episodes.size(); ++e) {
+    ExpectSameActions(batch[0][e].actions, RecurrentActionsByHand(policies[0], episodes[e]),
+                      "episode " + std::to_string(e) + " by hand");
+  }
 }
 
 // The collision analysis replays an episode from its scenario and recorded actions alone.

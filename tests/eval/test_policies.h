@@ -4,6 +4,7 @@
 #include <torch/script.h>
 #include <torch/torch.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -53,6 +54,39 @@ inline torch::jit::Module WrongActionSizePolicy() {
 def forward(self, obs: Tensor) -> Tensor:
     return obs[:, 0:3]
 )");
+}
+
+/// A recurrent policy (attribute recurrent_size = `size`) whose methods are `source`.
+inline torch::jit::Module RecurrentModule(const std::string& source, std::int64_t size,
+                                          const torch::Tensor& weight = {}) {
+  torch::jit::Module module = ScriptedModule(source, weight);
+  module.register_attribute("recurrent_size", c10::IntType::get(), size);
+  return module;
+}
+
+/// A recurrent ReactivePolicy: (action, next state) from tanh([obs, state] @ W) with a fixed
+/// random W [186 + 3, 2 + 3] of the given seed, so an action depends on the whole episode so far.
+inline torch::jit::Module RecurrentReactivePolicy(std::uint64_t seed) {
+  torch::manual_seed(seed);
+  return RecurrentModule(R"(
+def initial_state(self, batch: int) -> Tensor:
+    return torch.zeros([batch, 3])
+def step(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:
+    z = torch.matmul(torch.cat([obs, state], 1), self.weight)
+    return torch.tanh(z[:, 0:2] + torch.tensor([0.8, 0.0])), torch.tanh(z[:, 2:5])
+)",
+                         3, 0.3 * torch::randn({189, 5}));
+}
+
+/// A recurrent policy whose step returns next states of 4 values for its states of 3.
+inline torch::jit::Module WrongStateSizePolicy() {
+  return RecurrentModule(R"(
+def initial_state(self, batch: int) -> Tensor:
+    return torch.zeros([batch, 3])
+def step(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:
+    return obs[:, 0:2], obs[:, 0:4]
+)",
+                         3);
 }
 
 inline std::filesystem::path SavePolicy(torch::jit::Module module,

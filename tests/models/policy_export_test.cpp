@@ -30,6 +30,7 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
   EXPECT_EQ(loaded.attr("extractor").toStringRef(),
             ExtractorKindName(model->options().extractor.kind));
   EXPECT_EQ(loaded.attr("scans").toInt(), model->options().extractor.scans);
+  EXPECT_FALSE(loaded.hasattr("recurrent_size"));  // memoryless files stay as they were
 }
 
 TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
@@ -51,6 +52,60 @@ TEST(PolicyExportTest, ASquashingPolicyActsWithTheTanhOfItsMean) {
   torch::NoGradGuard no_grad;
   model->action_net()->weight.normal_(0.0, 3.0);
   ExpectExportMatches(model, directory.path() / "policy.pt");
+}
+
+// The message of the exception the TorchScript interpreter throws in `action`, or a marker.
+template <typename Action>
+std::string InterpreterError(Action action) {
+  try {
+    action();
+  } catch (const std::exception& error) {
+    return error.what();
+  }
+  return "<no exception thrown>";
+}
+
+// Three steps of the file from its initial_state against forward_recurrent from zeros: a wrong
+// gate order, bias or state hand-over shows as a difference by the second step at the latest.
+TEST(PolicyExportTest, ARecurrentPolicyStepsLikeTheInProcessModel) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  options.hidden_sizes = {16, 8};
+  ActorCritic model(options);
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.normal_(0.0, 3.0);
+  model->recurrent()->bias_ih.normal_(0.0, 0.5);  // zero biases would hide a misplaced one
+  model->recurrent()->bias_hh.normal_(0.0, 0.5);
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 1234, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  EXPECT_EQ(loaded.attr("recurrent_size").toInt(), 4);
+  const std::int64_t batch = 5;
+  torch::Tensor state = loaded.get_method("initial_state")({batch}).toTensor();
+  EXPECT_TRUE(torch::equal(state, torch::zeros({batch, 4})));
+  torch::Tensor expected_state = torch::zeros({batch, 4});
+  for (int k = 0; k < 3; ++k) {
+    const torch::Tensor obs = torch::rand({batch, kObservationSize});
+    const auto [mean, value, next_state] = model->forward_recurrent(obs, expected_state);
+    const auto stepped = loaded.get_method("step")({obs, state}).toTuple()->elements();
+    const auto valued = loaded.get_method("step_value")({obs, state}).toTuple()->elements();
+    EXPECT_TRUE(torch::allclose(stepped[0].toTensor(), mean.clamp(-1.0, 1.0), 1e-5, 1e-6))
+        << "step " << k;
+    EXPECT_TRUE(torch::allclose(stepped[1].toTensor(), next_state, 1e-5, 1e-6)) << "step " << k;
+    EXPECT_TRUE(torch::allclose(valued[0].toTensor(), value, 1e-5, 1e-5)) << "step " << k;
+    EXPECT_TRUE(torch::equal(valued[1].toTensor(), stepped[1].toTensor())) << "step " << k;
+    state = stepped[1].toTensor();
+    expected_state = next_state;
+  }
+  const torch::Tensor obs = torch::rand({batch, kObservationSize});
+  EXPECT_THAT(InterpreterError([&] { loaded.forward({obs}); }),
+              testing::HasSubstr("AssertionError: recurrent policy: call step(obs, state) "
+                                 "starting from initial_state(B)"));
+  EXPECT_THAT(InterpreterError([&] {
+                loaded.get_method("step")({obs, torch::zeros({batch, 3})});
+              }),
+              testing::HasSubstr("states [B, 4] expected"));
 }
 
 // Makes `options` a VAE extractor of `architecture` with an untrained encoder saved in `folder`.
