@@ -40,19 +40,32 @@ def observation_settings(path, policy):
     return settings
 
 
+def act(policy, obs, states, active):
+    """The deterministic actions of the episodes `active`, at least two rows at a time, as
+    evaluate does. A recurrent policy (train_ppo's policy.recurrent_size) steps from each
+    episode's state, which it replaces; `states` is None for a memoryless one."""
+    rows = active if len(active) > 1 else active * 2
+    with torch.no_grad():
+        if states is None:
+            return policy(torch.from_numpy(obs[rows])).numpy()[: len(active)]
+        actions, next_states = policy.step(torch.from_numpy(obs[rows]), states[rows])
+        states[active] = next_states[: len(active)]
+        return actions.numpy()[: len(active)]
+
+
 def run_episodes(policy, envs, actions_taken=None):
     """Each world's first episode under the policy's deterministic actions; returns the episode
     metrics per world and appends each step's actions of the unfinished episodes to
-    `actions_taken` (a list) when given. Only unfinished episodes go through the policy, at least
-    two rows at a time, as evaluate does, so the numbers are evaluate's to the last bit."""
+    `actions_taken` (a list) when given. Only unfinished episodes go through the policy, so the
+    numbers are evaluate's to the last bit."""
     obs, _ = envs.reset()
     results = [None] * envs.num_envs
     actions = np.zeros((envs.num_envs, colav.ACTION_SIZE), dtype=np.float32)
+    recurrent = getattr(policy, "recurrent_size", 0) > 0
+    states = policy.initial_state(envs.num_envs) if recurrent else None
     while any(result is None for result in results):
         active = [i for i, result in enumerate(results) if result is None]
-        rows = active if len(active) > 1 else active * 2
-        with torch.no_grad():
-            actions[active] = policy(torch.from_numpy(obs[rows])).numpy()[: len(active)]
+        actions[active] = act(policy, obs, states, active)
         if actions_taken is not None:
             actions_taken.append(actions[active].copy())
         obs, _, _, _, info = envs.step(actions)
@@ -100,7 +113,8 @@ def action_lines(policy, actions_taken):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument(
-        "policy", help="policy.pt (forward: obs [B, 6 + 180*(1+scan_history)] -> action [B, 2])")
+        "policy", help="policy.pt (forward: obs [B, 6 + 180*(1+scan_history)] -> action [B, 2]; "
+        "a recurrent one: step(obs, state) -> (action, state) from initial_state(B))")
     parser.add_argument("--episodes", type=int, default=100, help="test scenarios")
     parser.add_argument("--seed", type=int, default=0, help="master seed of the test scenarios")
     parser.add_argument("--scenario", action="append", help="scenario file, repeatable")

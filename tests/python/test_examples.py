@@ -42,6 +42,36 @@ def test_run_policy(tmp_path):
     assert "over 1 episodes (scenario files" in output
 
 
+class CountingPolicy(torch.nn.Module):
+    """A recurrent policy as train_ppo exports one (recurrent_size, initial_state, step): full
+    surge, and full rudder for the first 5 steps of each episode, which only the state counts."""
+
+    def __init__(self):
+        super().__init__()
+        self.recurrent_size = 1
+
+    @torch.jit.export
+    def initial_state(self, batch: int):
+        return torch.zeros(batch, 1)
+
+    @torch.jit.export
+    def step(self, obs, state):
+        rudder = (state < 5).float()
+        return torch.cat([torch.ones_like(rudder), rudder], 1), state + 1
+
+    def forward(self, obs):
+        raise RuntimeError("recurrent policy: call step(obs, state)")
+
+
+def test_run_policy_steps_a_recurrent_policy_from_each_episodes_state(tmp_path):
+    torch.jit.script(CountingPolicy()).save(str(tmp_path / "policy.pt"))
+    output = run_example("run_policy.py", tmp_path / "policy.pt", "--episodes", 3)
+    steps = float(output.split("duration (steps)")[1].split()[0])  # the mean over 3 episodes
+    rudder = float(output.split("rudder ")[1].split()[0])
+    # 5 steps at the limit in each episode: a state shared or not restarted would give others.
+    assert abs(rudder - 100.0 * 5 / steps) < 0.05, output
+
+
 class ConstantPolicy(torch.nn.Module):
     """Full surge, half rudder, whatever it sees; a training log_std as train_ppo's files have."""
 
