@@ -26,7 +26,7 @@ plot for [i=1:4] data skip 7 using 10:($4 * group(word(groups, i))):11:12:5:6 \
      data skip 7 using 10:4:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
 unset object 1
 set ylabel 'cross-track error m (lower is better)'
-set yrange [15:25]
+set yrange [14:25]
 set object 2 rect from graph 0, graph 0 to first 3, first 17 fc rgb '#b8e0b8' behind
 plot for [i=1:4] data skip 7 using 10:($7 * group(word(groups, i))):11:12:8:9 \
        with xyerrorbars pt (int(word(points, i))) ps 1.3 title title_of(i), \
