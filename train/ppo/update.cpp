@@ -38,6 +38,19 @@ PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t*
   return {B, actions_.data(), old_log_probs_.data(), advantages_.data(), returns_.data()};
 }
 
+const std::int64_t* PpoUpdater::EpochOrder(const RolloutBuffer& buffer,
+                                           torch::Generator& generator) {
+  if (policy_.recurrent_size() > 0) {
+    epoch_order_ = SequenceMinibatchOrder(buffer.num_steps(), buffer.num_envs(),
+                                          options_.sequence_length, options_.batch_size, generator);
+  } else {
+    const torch::Tensor permutation = torch::randperm(buffer.size(), generator, torch::kLong);
+    const std::int64_t* samples = permutation.data_ptr<std::int64_t>();
+    epoch_order_.assign(samples, samples + buffer.size());
+  }
+  return epoch_order_.data();
+}
+
 void PpoUpdater::SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
   const int S = B / options_.sequence_length;
   initial_states_.resize(S);
@@ -60,15 +73,7 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
   float d_log_std[kActionSize];
   for (int epoch = 0; epoch < options_.n_epochs; ++epoch) {
     const bool recurrent = policy_.recurrent_size() > 0;
-    const torch::Tensor permutation =
-        recurrent ? torch::Tensor() : torch::randperm(n, generator, torch::kLong);
-    if (recurrent) {
-      sequence_order_ =
-          SequenceMinibatchOrder(buffer.num_steps(), buffer.num_envs(), options_.sequence_length,
-                                 options_.batch_size, generator);
-    }
-    const std::int64_t* order =
-        recurrent ? sequence_order_.data() : permutation.data_ptr<std::int64_t>();
+    const std::int64_t* order = EpochOrder(buffer, generator);
     double epoch_kl = 0.0;
     int epoch_minibatches = 0;
     for (int start = 0; start < n; start += options_.batch_size) {

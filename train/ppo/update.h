@@ -48,6 +48,9 @@ class PpoUpdater {
 
  private:
   PpoMinibatch Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
+  /// The epoch's order of the samples, minibatch after minibatch: shuffled samples, or for a
+  /// recurrent policy shuffled whole sequences (sequence_minibatches.h).
+  const std::int64_t* EpochOrder(const RolloutBuffer& buffer, torch::Generator& generator);
   /// A recurrent policy's minibatch of `indices` (sequence_minibatches.h): the initial states and
   /// the episode starts of its sequences.
   void SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
@@ -61,7 +64,7 @@ class PpoUpdater {
   std::vector<const float*> rows_;
   std::vector<float> actions_, old_log_probs_, advantages_, returns_;
   std::vector<float> d_mean_, d_value_;
-  std::vector<std::int64_t> sequence_order_;
+  std::vector<std::int64_t> epoch_order_;
   std::vector<const float*> initial_states_;
   std::vector<std::uint8_t> resets_;
 };
