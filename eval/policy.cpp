@@ -1,5 +1,6 @@
 #include "eval/policy.h"
 
+#include <functional>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -123,18 +124,18 @@ void Policy::ReadOwnSettings() {
 }
 
 torch::IValue Policy::Run(const std::string& method, std::vector<torch::IValue> inputs,
-                          const std::string& call) {
+                          const std::function<std::string()>& describe_call) {
   try {
     c10::InferenceMode inference;
     return module_.get_method(method)(std::move(inputs));
   } catch (const std::exception& error) {
-    throw UserError(path_.string() + ": " + call + " failed: " + OneLineReason(error));
+    throw UserError(path_.string() + ": " + describe_call() + " failed: " + OneLineReason(error));
   }
 }
 
 torch::Tensor Policy::Forward(const torch::Tensor& observations) {
-  const torch::IValue output =
-      Run("forward", {observations}, "forward(obs " + ShapeText(observations) + ")");
+  const torch::IValue output = Run("forward", {observations},
+                                   [&] { return "forward(obs " + ShapeText(observations) + ")"; });
   if (!output.isTensor()) {
     throw UserError(path_.string() + ": forward must return one tensor of actions, got " +
                     output.tagKind());
@@ -153,9 +154,9 @@ torch::Tensor Policy::Act(const torch::Tensor& observations) {
 
 torch::Tensor Policy::Step(const torch::Tensor& observations, torch::Tensor& states) {
   TORCH_CHECK(recurrent(), path_.string(), ": a memoryless policy acts through Act");
-  const torch::IValue output =
-      Run("step", {observations, states},
-          "step(obs " + ShapeText(observations) + ", state " + ShapeText(states) + ")");
+  const torch::IValue output = Run("step", {observations, states}, [&] {
+    return "step(obs " + ShapeText(observations) + ", state " + ShapeText(states) + ")";
+  });
   const std::optional<std::pair<torch::Tensor, torch::Tensor>> pair = FloatTensorPair(output);
   if (!pair) {
     throw UserError(path_.string() + ": step must return a tuple (actions, next states), got " +
@@ -173,7 +174,7 @@ torch::Tensor Policy::Step(const torch::Tensor& observations, torch::Tensor& sta
 torch::Tensor Policy::InitialStates(std::int64_t batch) {
   TORCH_CHECK(recurrent(), path_.string(), ": a memoryless policy has no state");
   const torch::IValue output =
-      Run("initial_state", {batch}, "initial_state(" + std::to_string(batch) + ")");
+      Run("initial_state", {batch}, [&] { return "initial_state(" + std::to_string(batch) + ")"; });
   if (!output.isTensor()) {
     throw UserError(path_.string() + ": initial_state must return one tensor, got " +
                     output.tagKind());

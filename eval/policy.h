@@ -11,6 +11,7 @@
 #include <torch/torch.h>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -58,8 +59,10 @@ class Policy {
 
  private:
   torch::Tensor Forward(const torch::Tensor& observations);
+  /// Runs `method`; a failure is a UserError naming the file and describe_call()'s text, which is
+  /// built only then (the evaluation calls a policy at every step).
   torch::IValue Run(const std::string& method, std::vector<torch::IValue> inputs,
-                    const std::string& call);
+                    const std::function<std::string()>& describe_call);
   void ReadRecurrentSize();
   void Probe(std::int64_t batch, int observation_size);
   void ExpectShape(const torch::Tensor& tensor, std::int64_t rows, std::int64_t columns,

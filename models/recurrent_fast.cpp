@@ -62,6 +62,9 @@ const float* FastGru::ForwardSequences(const float* x, const float* initial,
   reset_ = reset;
   kernels::LinearForward(Data(weight_ih_), Data(bias_ih_), x, input_size_, 3 * H, C,
                          input_gates_.data());
+  const float* gi = input_gates_.data();
+  float* gh = recurrent_gates_.data();
+  const float* b_hh = Data(bias_hh_);
   for (int t = 0; t < L; ++t) {
     const int c0 = t * S;
     for (int j = 0; j < H; ++j) {
@@ -71,19 +74,15 @@ const float* FastGru::ForwardSequences(const float* x, const float* initial,
         previous_[j * C + c0 + s] = zero ? 0.0f : before;
       }
     }
-    float* gh = recurrent_gates_.data() + c0;
-    kernels::MatMul(gh, C, Data(weight_hh_), H, 1, previous_.data() + c0, C, 3 * H, S, H,
+    kernels::MatMul(gh + c0, C, Data(weight_hh_), H, 1, previous_.data() + c0, C, 3 * H, S, H,
                     /*accumulate=*/false);
-    const float* b_hh = Data(bias_hh_);
     for (int j = 0; j < H; ++j) {
       for (int s = 0; s < S; ++s) {
         const int c = c0 + s;
-        const float* gi = input_gates_.data();
-        float* gh_all = recurrent_gates_.data();
-        for (int g = 0; g < 3; ++g) gh_all[(g * H + j) * C + c] += b_hh[g * H + j];
-        const float r = Sigmoid(gi[j * C + c] + gh_all[j * C + c]);
-        const float z = Sigmoid(gi[(H + j) * C + c] + gh_all[(H + j) * C + c]);
-        const float n = std::tanh(gi[(2 * H + j) * C + c] + r * gh_all[(2 * H + j) * C + c]);
+        for (int g = 0; g < 3; ++g) gh[(g * H + j) * C + c] += b_hh[g * H + j];
+        const float r = Sigmoid(gi[j * C + c] + gh[j * C + c]);
+        const float z = Sigmoid(gi[(H + j) * C + c] + gh[(H + j) * C + c]);
+        const float n = std::tanh(gi[(2 * H + j) * C + c] + r * gh[(2 * H + j) * C + c]);
         reset_gate_[j * C + c] = r;
         update_gate_[j * C + c] = z;
         candidate_[j * C + c] = n;
