@@ -14,6 +14,8 @@ const std::vector<StudyMetric>& StudyMetrics() {
       {"goal", "goal", "goal %", 100.0, true, true},
       // episodes that ran out of steps without a collision or the goal: evaluate's `truncated`
       {"time_out", "truncated", "time-outs %", 100.0, false, true},
+      // the episode's summed reward: the objective the learner maximises, every term in one number
+      {"return", "reward", "return", 1.0, true, false},
   };
   return kMetrics;
 }

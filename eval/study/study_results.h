@@ -25,7 +25,7 @@ struct StudyMetric {
   bool bounded() const { return is_rate || name == "progress"; }
 };
 
-/// progress, cross_track_error, duration, collision, goal, time_out.
+/// progress, cross_track_error, duration, collision, goal, time_out, return.
 const std::vector<StudyMetric>& StudyMetrics();
 
 /// values[metric name][scenario] of one model.

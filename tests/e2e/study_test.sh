@@ -49,7 +49,7 @@ done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
 grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
-import json, sys
+import csv, json, os, statistics, sys
 s = json.load(open(sys.argv[1]))
 for name, episodes in (("study", 6), ("paper", 4)):
     sset = s["scenario_sets"][name]
@@ -65,6 +65,11 @@ for name, episodes in (("study", 6), ("paper", 4)):
         o = m["outcomes"]
         lost = sum(o[part]["progress_lost"] for part in ("collision", "time_out", "rest"))
         assert abs(lost - (100 - m["metrics"]["progress"]["mean"])) < 1e-6, (lost, m)
+        # the return: the mean over seeds of the mean summed reward in eval/<set>/episodes.csv
+        rows = list(csv.DictReader(open(f"{os.path.dirname(sys.argv[1])}/eval/{name}/episodes.csv")))
+        seed_means = [statistics.fmean(float(r["reward"]) for r in rows
+                                       if r["model"] == f'{m["name"]}.seed_{k}') for k in range(2)]
+        assert abs(m["metrics"]["return"]["mean"] - statistics.fmean(seed_means)) < 1e-6, (seed_means, m)
     poi = sset["probability_of_improvement"]
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1

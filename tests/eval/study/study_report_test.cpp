@@ -8,20 +8,23 @@ namespace colav {
 namespace {
 
 // One model's episodes: every metric's value per scenario (progress and rates in %); an episode
-// with less than 90 % progress and no collision timed out.
+// with less than 90 % progress and no collision timed out; its return is progress - collision.
 ModelEpisodes Episodes(std::vector<double> progress, std::vector<double> cte,
                        std::vector<double> collision) {
   const std::vector<double> constant(progress.size(), 500.0);
   std::vector<double> time_out(progress.size(), 0.0);
+  std::vector<double> episode_return(progress.size(), 0.0);
   for (std::size_t i = 0; i < progress.size(); ++i) {
     time_out[i] = progress[i] < 90.0 && collision[i] == 0.0 ? 100.0 : 0.0;
+    episode_return[i] = progress[i] - collision[i];
   }
   return {{"progress", progress},
           {"cross_track_error", cte},
           {"duration", constant},
           {"collision", collision},
           {"goal", std::vector<double>(progress.size(), 0.0)},
-          {"time_out", time_out}};
+          {"time_out", time_out},
+          {"return", episode_return}};
 }
 
 TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
@@ -56,6 +59,10 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   const MetricEstimate& cte = better.metrics.at("cross_track_error");
   EXPECT_EQ(cte.method, "t over seeds");
   EXPECT_NEAR(cte.ci.high - cte.mean, 12.7062 * 5.0, 1e-3);
+  // The return is unbounded too: seed means 100 and (90 * 3 - 10) / 4 = 65.
+  const MetricEstimate& episode_return = better.metrics.at("return");
+  EXPECT_EQ(episode_return.method, "t over seeds");
+  EXPECT_DOUBLE_EQ(episode_return.mean, 82.5);
 
   const ModelSummary& agent = report.models[2];
   EXPECT_EQ(agent.name, "ref.agent");
@@ -76,6 +83,9 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   // t0: better {0, 0} vs {100, 100}: 4 wins; t1: {0, 0} vs {0, 100}: 2 wins + 2 ties; t2: 4 ties;
   // t3: {0, 100} vs {0, 0}: 2 ties, 2 losses. (4 + 3 + 2 + 1) / 16.
   EXPECT_DOUBLE_EQ(over_baseline.metrics.at("collision").probability, 10.0 / 16.0);
+  // Return, higher is better; per scenario (seed 0, seed 1), better: t0-t2 (100, 90), t3 (100,
+  // -10); baseline: t0 (-20, -30), t1 (80, -30), t2-t3 (80, 70). 4 wins on each of t0-t2, 2 on t3.
+  EXPECT_DOUBLE_EQ(over_baseline.metrics.at("return").probability, 14.0 / 16.0);
   EXPECT_EQ(report.improvements[1].over, "ref.agent");
   EXPECT_EQ(report.improvements[2].model, "baseline");
   // Each configuration against the single agent only, not against the other configuration.
