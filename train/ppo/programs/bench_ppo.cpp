@@ -1,9 +1,11 @@
 // bench_ppo: times the PPO learner without the simulator, on synthetic rollouts: one update of a
 // full rollout (n_steps x n_envs samples, n_epochs passes of minibatches) and the batched policy
-// forward of a rollout step, for each of the paper's five configurations. Times are the thread's
-// CPU time (steady under load from other processes; on an idle machine they equal wall time).
-// Ends with headline lines `update_us_per_minibatch_<config>: N`, `policy_us_per_step_<config>: N`
-// and `learner_s_per_3m_steps_<config>: N` (the learner's share of a 3,000,000-step run).
+// forward of a rollout step, for each of the paper's five configurations and the shallow locked
+// one with a memory (policy.recurrent_size 32, sequences of ppo.sequence_length). Times are the
+// thread's CPU time (steady under load from other processes; on an idle machine they equal wall
+// time). Ends with headline lines `update_us_per_minibatch_<config>: N`,
+// `policy_us_per_step_<config>: N` and `learner_s_per_3m_steps_<config>: N` (the learner's share of
+// a 3,000,000-step run).
 #include <ATen/CPUGeneratorImpl.h>
 #include <time.h>
 
@@ -31,10 +33,13 @@ struct Configuration {
   std::string name;
   colav::ExtractorKind kind;
   bool locked;
+  int recurrent_size = 0;
 };
 
-colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options) {
-  colav::RolloutBuffer buffer(options.n_steps, options.n_envs, colav::kObservationSize);
+// Random observations and actions, rewards of -1, 0 or 1, episodes of 300 steps; with a memory,
+// random states in (-1, 1) (a GRU's range), 0 where an episode starts.
+colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options, int state_size) {
+  colav::RolloutBuffer buffer(options.n_steps, options.n_envs, colav::kObservationSize, state_size);
   const int N = options.n_envs;
   torch::Generator generator = at::make_generator<at::CPUGeneratorImpl>(1);
   for (int t = 0; t < options.n_steps; ++t) {
@@ -47,6 +52,11 @@ colav::RolloutBuffer SyntheticRollout(const colav::PpoOptions& options) {
       buffer.rewards(t)[e] = static_cast<float>(e % 3) - 1.0f;
       buffer.dones(t)[e] = (t % 300) == 299;
     }
+    if (state_size == 0) continue;
+    const bool episode_start = t % 300 == 0;
+    const torch::Tensor states = episode_start ? torch::zeros({N, state_size})
+                                               : torch::rand({N, state_size}, generator) * 2 - 1;
+    std::copy_n(states.data_ptr<float>(), states.numel(), buffer.states(t));
   }
   buffer.ComputeReturnsAndAdvantages(options.gamma, options.gae_lambda);
   return buffer;
@@ -62,20 +72,22 @@ int Main(int argc, char** argv) {
   torch::set_num_threads(1);
 
   const colav::PpoOptions options;
-  const colav::RolloutBuffer buffer = SyntheticRollout(options);
   const double minibatches_per_update =
-      options.n_epochs * static_cast<double>(buffer.size()) / options.batch_size;
+      options.n_epochs * static_cast<double>(options.n_steps) * options.n_envs / options.batch_size;
   const std::vector<Configuration> configurations = {
       {"baseline", colav::ExtractorKind::kBaseline, false},
       {"shallow_locked", colav::ExtractorKind::kVaeShallow, true},
       {"shallow_unlocked", colav::ExtractorKind::kVaeShallow, false},
       {"deep_locked", colav::ExtractorKind::kVaeDeep, true},
-      {"deep_unlocked", colav::ExtractorKind::kVaeDeep, false}};
+      {"deep_unlocked", colav::ExtractorKind::kVaeDeep, false},
+      {"shallow_locked_recurrent32", colav::ExtractorKind::kVaeShallow, true, 32}};
   std::vector<std::string> headlines;
   for (const Configuration& configuration : configurations) {
     colav::ActorCriticOptions model_options;
     model_options.extractor.kind = configuration.kind;  // untrained encoder: same cost
     model_options.extractor.locked = configuration.locked;
+    model_options.recurrent_size = configuration.recurrent_size;
+    const colav::RolloutBuffer buffer = SyntheticRollout(options, configuration.recurrent_size);
     colav::PpoUpdater updater(colav::ActorCritic(model_options), options);
     auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
     updater.Update(buffer, generator);  // warm-up
@@ -85,12 +97,15 @@ int Main(int argc, char** argv) {
     const double update_s = (ThreadCpuSeconds() - start) / rollouts;
 
     std::vector<float> mean(options.n_envs * colav::kActionSize), value(options.n_envs);
+    std::vector<float> states(static_cast<std::size_t>(options.n_envs) *
+                              configuration.recurrent_size);
+    float* step_states = configuration.recurrent_size > 0 ? states.data() : nullptr;
     start = ThreadCpuSeconds();
     for (int t = 0; t < options.n_steps; ++t) {
       updater.policy().Predict(buffer.observations().data() + static_cast<std::ptrdiff_t>(t) *
                                                                   options.n_envs *
                                                                   colav::kObservationSize,
-                               options.n_envs, mean.data(), value.data());
+                               options.n_envs, mean.data(), value.data(), step_states);
     }
     const double predict_s = (ThreadCpuSeconds() - start) / options.n_steps;
 
