@@ -14,6 +14,10 @@
     obs, reward, terminated, truncated, info = envs.recv()       # the first 4 worlds done
     envs.send(actions, info["env_id"])                           # their next step
 
+    policy = colav.Policy("runs/best/policy.pt")   # a trained policy (needs PyTorch)
+    envs = colav.make_vec(8, **policy.observation_settings)
+    actions = policy.act(obs, episode_starts)      # a recurrent one keeps each world's memory
+
 Observations are float32 [6 + 180*(1+scan_history)], [186] by default (OBSERVATION_SIZE): u, v,
 r, cte/100, heading error, look-ahead heading error, then the closeness of rays 0-179 (README,
 "Observation"). With scan_history=H, the 180 closeness values of the scans k*scan_history_interval
@@ -25,6 +29,7 @@ Bad settings, seeds or scenario files raise ValueError naming the key or file.
 from . import _colav
 from ._async import AsyncVectorEnv, make_async
 from ._envs import RENDER_SIZE, Env, VectorEnv, _resolve_world, make, make_vec
+from ._policy import Policy
 from ._spaces import ACTION_SIZE, OBSERVATION_SIZE, Box, gymnasium
 
 UserError = _colav.UserError
@@ -71,8 +76,8 @@ def evaluation_scenarios(count=100, seed=0):
 
 
 __all__ = [
-    "ACTION_SIZE", "OBSERVATION_SIZE", "AsyncVectorEnv", "Box", "Env", "Scenario", "UserError",
-    "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async", "make_vec",
+    "ACTION_SIZE", "OBSERVATION_SIZE", "AsyncVectorEnv", "Box", "Env", "Policy", "Scenario",
+    "UserError", "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async", "make_vec",
     "evaluation_scenario_seeds", "evaluation_scenarios", "training_episode_seed",
     "training_scenario", "world_settings",
 ]

@@ -9,8 +9,6 @@ bang-bang: its mean, the deterministic action, is clipped).
 """
 
 import argparse
-import os
-import re
 
 import numpy as np
 import torch
@@ -18,54 +16,17 @@ import torch
 import colav
 
 
-# The env keys that decide what an observation means (env/observation_settings.h).
-OBSERVATION_KEYS = ("closeness", "scan_history", "scan_history_interval")
-
-
-def observation_settings(path, policy):
-    """The env settings the policy was trained with, found where evaluate looks: the file's
-    `observation_settings` record, else the sidecar file "<policy>.yaml"; both hold
-    "env:\\n  closeness: linear|log" and, with a scan history, "scan_history: H" and
-    "scan_history_interval: S" (env/observation_settings.h). {key: value text} of the keys found;
-    {} when neither exists."""
-    text = getattr(policy, "observation_settings", None)
-    if text is None and os.path.exists(path + ".yaml"):
-        with open(path + ".yaml", encoding="utf-8") as sidecar:
-            text = sidecar.read()
-    settings = {}
-    for key in OBSERVATION_KEYS:
-        match = re.search(rf"^\s*{key}:\s*(\S+)", text or "", re.MULTILINE)
-        if match:
-            settings[key] = match.group(1)
-    return settings
-
-
-def act(policy, obs, states, active):
-    """The deterministic actions of the episodes `active`, at least two rows at a time, as
-    evaluate does. A recurrent policy (train_ppo's policy.recurrent_size) steps from each
-    episode's state, which it replaces; `states` is None for a memoryless one."""
-    rows = active if len(active) > 1 else active * 2
-    with torch.no_grad():
-        if states is None:
-            return policy(torch.from_numpy(obs[rows])).numpy()[: len(active)]
-        actions, next_states = policy.step(torch.from_numpy(obs[rows]), states[rows])
-        states[active] = next_states[: len(active)]
-        return actions.numpy()[: len(active)]
-
-
 def run_episodes(policy, envs, actions_taken=None):
-    """Each world's first episode under the policy's deterministic actions; returns the episode
-    metrics per world and appends each step's actions of the unfinished episodes to
-    `actions_taken` (a list) when given. Only unfinished episodes go through the policy, so the
-    numbers are evaluate's to the last bit."""
+    """Each world's first episode under the colav.Policy's deterministic actions; returns the
+    episode metrics per world and appends each step's actions of the unfinished episodes to
+    `actions_taken` (a list) when given. Only unfinished episodes go through the policy (a
+    recurrent one keeps each world's memory), so the numbers are evaluate's to the last bit."""
     obs, _ = envs.reset()
     results = [None] * envs.num_envs
     actions = np.zeros((envs.num_envs, colav.ACTION_SIZE), dtype=np.float32)
-    recurrent = getattr(policy, "recurrent_size", 0) > 0
-    states = policy.initial_state(envs.num_envs) if recurrent else None
     while any(result is None for result in results):
         active = [i for i, result in enumerate(results) if result is None]
-        actions[active] = act(policy, obs, states, active)
+        actions[active] = policy.act(obs, worlds=active)
         if actions_taken is not None:
             actions_taken.append(actions[active].copy())
         obs, _, _, _, info = envs.step(actions)
@@ -103,7 +64,7 @@ def action_lines(policy, actions_taken):
     at_limit = 100.0 * (np.abs(np.concatenate(actions_taken)) >= AT_LIMIT).mean(axis=0)
     lines = [f"actions at a limit %    surge {at_limit[0]:.1f}, rudder {at_limit[1]:.1f} "
              f"(|a| >= {AT_LIMIT}, all steps)"]
-    log_std = dict(policy.named_parameters()).get("log_std")
+    log_std = dict(policy.module.named_parameters()).get("log_std")
     if log_std is not None:
         std = ", ".join(f"{value:.3g}" for value in log_std.detach().exp().tolist())
         lines.append(f"training std            {std} (surge, rudder)")
@@ -121,9 +82,9 @@ def main():
     args = parser.parse_args()
 
     torch.set_num_threads(1)  # tiny networks: threads only add overhead
-    policy = torch.jit.load(args.policy)
+    policy = colav.Policy(args.policy)
     scenarios = args.scenario or colav.evaluation_scenarios(args.episodes, args.seed)
-    settings = observation_settings(args.policy, policy)
+    settings = policy.observation_settings
     envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
     actions_taken = []
     results = run_episodes(policy, envs, actions_taken)

@@ -144,13 +144,11 @@ def evaluate_episodes(policy_file, out, *arguments):
 
 
 def python_episodes(policy_file, scenarios):
-    example = run_policy_example()
-    policy = torch.jit.load(str(policy_file))
-    settings = example.observation_settings(str(policy_file), policy)
-    assert settings["closeness"] == "log"
-    envs = colav.make_vec(scenarios=scenarios, test_mode=True, **settings)
-    assert envs.single_observation_space.shape == (policy.hidden.weight.shape[1],)
-    return example.run_episodes(policy, envs)
+    policy = colav.Policy(policy_file)
+    assert policy.observation_settings["closeness"] == "log"
+    envs = colav.make_vec(scenarios=scenarios, test_mode=True, **policy.observation_settings)
+    assert envs.single_observation_space.shape == (policy.module.hidden.weight.shape[1],)
+    return run_policy_example().run_episodes(policy, envs)
 
 
 def assert_same_metrics(python, evaluate):

@@ -109,7 +109,7 @@ class HistoryPolicy(torch.nn.Module):
 def test_run_policy_builds_the_env_of_the_recorded_observation_settings(tmp_path):
     torch.jit.script(HistoryPolicy()).save(str(tmp_path / "policy.pt"))
     output = run_example("run_policy.py", tmp_path / "policy.pt", "--episodes", 2)
-    assert "'closeness': 'log', 'scan_history': '3', 'scan_history_interval': '5'" in output
+    assert "'closeness': 'log', 'scan_history': 3, 'scan_history_interval': 5" in output
 
 
 def test_bench_python(tmp_path):

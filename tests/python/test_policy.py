@@ -1,0 +1,99 @@
+"""colav.Policy: a policy.pt's observation settings, its deterministic actions, and a recurrent
+policy's memory per world, restarted where an episode starts."""
+
+import numpy as np
+import pytest
+import torch
+
+import colav
+
+
+class CountingPolicy(torch.nn.Module):
+    """A recurrent policy as train_ppo exports one: its action is the number of steps its memory
+    has seen (surge) and the observation's first value (rudder)."""
+
+    def __init__(self):
+        super().__init__()
+        self.recurrent_size = 1
+
+    @torch.jit.export
+    def initial_state(self, batch: int):
+        return torch.zeros(batch, 1)
+
+    @torch.jit.export
+    def step(self, obs, state):
+        state = state + 1
+        return torch.cat([state, obs[:, :1]], 1), state
+
+    def forward(self, obs):
+        raise RuntimeError("recurrent policy: call step(obs, state)")
+
+
+class HistoryPolicy(torch.nn.Module):
+    """A memoryless policy.pt that records its observation settings, as train_ppo's files do."""
+
+    observation_settings: str
+
+    def __init__(self):
+        super().__init__()
+        self.observation_settings = (
+            "env:\n  closeness: log\n  scan_history: 3\n  scan_history_interval: 5\n")
+
+    def forward(self, obs):
+        return obs[:, :2] * 2
+
+
+def save(module, path):
+    torch.jit.script(module).save(str(path))
+    return path
+
+
+def observations(worlds):
+    """obs [worlds, 186] whose first value is the world's index."""
+    obs = np.zeros((worlds, colav.OBSERVATION_SIZE), dtype=np.float32)
+    obs[:, 0] = np.arange(worlds)
+    return obs
+
+
+def test_reads_the_observation_settings_from_the_file_or_its_sidecar(tmp_path):
+    policy = colav.Policy(save(HistoryPolicy(), tmp_path / "history.pt"))
+    assert policy.observation_settings == {
+        "closeness": "log", "scan_history": 3, "scan_history_interval": 5}
+    assert policy.recurrent_size == 0
+    # The authors' agents: a sidecar <policy>.yaml; without either, no settings.
+    sidecar = save(CountingPolicy(), tmp_path / "authors.pt")
+    assert colav.Policy(sidecar).observation_settings == {}
+    (tmp_path / "authors.pt.yaml").write_text("env:\n  closeness: log\n")
+    assert colav.Policy(sidecar).observation_settings == {"closeness": "log"}
+
+
+def test_memoryless_actions_of_chosen_worlds(tmp_path):
+    policy = colav.Policy(save(HistoryPolicy(), tmp_path / "policy.pt"))
+    obs = observations(4)
+    np.testing.assert_array_equal(policy.act(obs)[:, 0], [0, 2, 4, 6])
+    np.testing.assert_array_equal(policy.act(obs, worlds=[3])[:, 0], [6])  # one row: a batch of 2
+    np.testing.assert_array_equal(policy.act(obs, worlds=[2, 0])[:, 0], [4, 0])
+
+
+def test_a_recurrent_policy_keeps_one_memory_per_world(tmp_path):
+    policy = colav.Policy(save(CountingPolicy(), tmp_path / "policy.pt"))
+    assert policy.recurrent_size == 1
+    obs = observations(3)
+    np.testing.assert_array_equal(policy.act(obs), [[1, 0], [1, 1], [1, 2]])
+    # Only the worlds stepped advance their memories.
+    np.testing.assert_array_equal(policy.act(obs, worlds=[2]), [[2, 2]])
+    np.testing.assert_array_equal(policy.act(obs, worlds=[0, 2]), [[2, 0], [3, 2]])
+    # World 0 starts an episode: its memory restarts from 0, the others go on.
+    starts = np.array([True, False, False])
+    np.testing.assert_array_equal(policy.act(obs, starts)[:, 0], [1, 2, 4])
+
+
+def test_refuses_what_it_cannot_run(tmp_path):
+    with pytest.raises(ValueError, match="missing.pt: no such policy file"):
+        colav.Policy(tmp_path / "missing.pt")
+    policy = colav.Policy(save(CountingPolicy(), tmp_path / "policy.pt"))
+    policy.act(observations(3))
+    with pytest.raises(ValueError, match="4 worlds, but the memories are of 3"):
+        policy.act(observations(4))
+    with pytest.raises(ValueError, match=r"episode_starts of shape \(2,\), not \(3,\)"):
+        policy.act(observations(3), [True, False])
