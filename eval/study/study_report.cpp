@@ -176,11 +176,11 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
   md << "\nProbability of improvement: P(model better than the other on a random scenario and "
         "training seed; ties count half), with a 95 % bootstrap interval over seeds and "
         "scenarios. Above 0.5 with the whole interval: better.\n\n"
-        "| model | over | progress | cte | collisions |\n|---|---|---|---|---|\n";
+        "| model | over | progress | cte | collisions | return |\n|---|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
     md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
        << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
-       << Cell(row.metrics.at("collision")) << " |\n";
+       << Cell(row.metrics.at("collision")) << " | " << Cell(row.metrics.at("return")) << " |\n";
   }
 }
 

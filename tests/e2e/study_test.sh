@@ -47,6 +47,8 @@ for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
   [ -s "$WORK/run/$file" ] || fail "missing $file"
 done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
+grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REPORT.md" ||
+  fail "no return in the report's probability of improvement"
 grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import csv, json, os, statistics, sys
