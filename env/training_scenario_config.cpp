@@ -1,5 +1,7 @@
 #include "env/training_scenario_config.h"
 
+#include <cmath>
+
 namespace colav {
 namespace {
 
@@ -27,6 +29,19 @@ OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding(const std::string
               "standard deviation (m) of a circle's lateral offset from the path (training)", 0.0,
               kMaxDisplacementSd);
   return binding;
+}
+
+int SecondKindWorlds(double second_share, int num_worlds) {
+  return static_cast<int>(std::lround(second_share * num_worlds));
+}
+
+std::vector<TrainingScenarioConfig> MixedWorlds(const TrainingScenarioConfig& first,
+                                                const TrainingScenarioConfig& second,
+                                                double second_share, int num_worlds) {
+  const int second_count = SecondKindWorlds(second_share, num_worlds);
+  std::vector<TrainingScenarioConfig> worlds(num_worlds - second_count, first);
+  worlds.insert(worlds.end(), second_count, second);
+  return worlds;
 }
 
 }  // namespace colav

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "env/training_scenario_config.h"
 #include "src/threads/thread_pool.h"
 
 namespace colav::python {
@@ -43,9 +44,11 @@ void ReadEnvIds(const py::object& env_ids, int num_envs, std::vector<std::int32_
 }  // namespace
 
 AsyncVectorEnvironment::AsyncVectorEnvironment(const ResolvedSettings& settings,
-                                               const ResolvedWorld& world, int num_envs,
-                                               int batch_size, std::uint64_t seed, int num_threads)
-    : pool_(settings.config, std::vector<TrainingScenarioConfig>(num_envs, world.config),
+                                               const ResolvedWorld& world,
+                                               const ResolvedWorld& world2, double world2_share,
+                                               int num_envs, int batch_size, std::uint64_t seed,
+                                               int num_threads)
+    : pool_(settings.config, MixedWorlds(world.config, world2.config, world2_share, num_envs),
             batch_size, ThreadCountOrAllCores(num_threads), seed),
       outputs_{BatchArrays(batch_size, pool_.observation_size()),
                BatchArrays(batch_size, pool_.observation_size())},
@@ -97,9 +100,10 @@ py::dict AsyncVectorEnvironment::FinishedEpisodes() const {
 
 void BindAsyncVectorEnvironment(py::module_& module) {
   py::class_<AsyncVectorEnvironment>(module, "AsyncVectorEnvironment")
-      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, int, int, std::uint64_t, int>(),
-           py::arg("settings"), py::arg("world"), py::arg("num_envs"), py::arg("batch_size"),
-           py::arg("seed"), py::arg("num_threads"))
+      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, const ResolvedWorld&, double,
+                    int, int, std::uint64_t, int>(),
+           py::arg("settings"), py::arg("world"), py::arg("world2"), py::arg("world2_share"),
+           py::arg("num_envs"), py::arg("batch_size"), py::arg("seed"), py::arg("num_threads"))
       .def(py::init<const ResolvedSettings&, const std::vector<Scenario>&, int, int>(),
            py::arg("settings"), py::arg("scenarios"), py::arg("batch_size"), py::arg("num_threads"))
       .def_property_readonly("num_envs", &AsyncVectorEnvironment::num_envs)

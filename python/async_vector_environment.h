@@ -20,9 +20,11 @@ namespace py = pybind11;
 
 class AsyncVectorEnvironment {
  public:
-  /// num_envs training worlds of `world` (as VectorEnvironment's) returned batch_size at a time,
-  /// stepped on num_threads threads (0: one per core) counting the one calling recv.
-  AsyncVectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world, int num_envs,
+  /// num_envs training worlds of `world` and `world2` (as VectorEnvironment's) returned
+  /// batch_size at a time, stepped on num_threads threads (0: one per core) counting the one
+  /// calling recv.
+  AsyncVectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world,
+                         const ResolvedWorld& world2, double world2_share, int num_envs,
                          int batch_size, std::uint64_t seed, int num_threads);
   /// One world per scenario, replaying it in every episode.
   AsyncVectorEnvironment(const ResolvedSettings& settings, const std::vector<Scenario>& scenarios,

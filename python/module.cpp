@@ -47,8 +47,9 @@ void BindSettings(py::module_& module) {
              "The environment configuration of {keyword: value text}, validated as the programs "
              "validate env.* keys (ValueError naming the key).");
   module.def("resolve_world", &ResolveWorld, py::arg("texts"), py::arg("origin"),
-             "The training world of {keyword: value text}, validated as train_ppo validates "
-             "world.* keys (ValueError naming the key).");
+             py::arg("section"),
+             "A kind of training world of {keyword: value text}, validated as train_ppo "
+             "validates its SECTION.* keys (world or world2; ValueError naming the key).");
   module.def(
       "setting_docs", [] { return DocsDict(SettingDocs()); },
       "{keyword: (default, doc)} of every environment setting.");

@@ -47,8 +47,8 @@ ResolvedSettings ResolveSettings(const std::map<std::string, std::string>& texts
 }
 
 ResolvedWorld ResolveWorld(const std::map<std::string, std::string>& texts,
-                           const std::string& origin) {
-  return Resolve(TrainingScenarioBinding(kWorldSection), kWorldSection, texts, origin);
+                           const std::string& origin, const std::string& section) {
+  return Resolve(TrainingScenarioBinding(section), section, texts, origin);
 }
 
 std::vector<SettingDoc> SettingDocs() { return DocsOf(EnvironmentBinding().Schema()); }

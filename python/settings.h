@@ -29,10 +29,10 @@ using ResolvedWorld = Resolved<TrainingScenarioConfig>;
 /// the defaults. An unknown name or a bad value is a UserError naming `origin` and the key.
 ResolvedSettings ResolveSettings(const std::map<std::string, std::string>& texts,
                                  const std::string& origin);
-/// The same for the training world (e.g. "num_static" -> "22") over the paper's, read as
-/// train_ppo reads its world.* keys.
+/// The same for a kind of training world (e.g. "num_static" -> "22") over the paper's, read as
+/// train_ppo reads its `section`.* keys (section "world" or "world2", which errors name).
 ResolvedWorld ResolveWorld(const std::map<std::string, std::string>& texts,
-                           const std::string& origin);
+                           const std::string& origin, const std::string& section);
 
 /// Each setting: keyword name, default value and documentation, in the schema's order.
 struct SettingDoc {

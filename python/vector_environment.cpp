@@ -5,13 +5,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "env/training_scenario_config.h"
 #include "src/threads/thread_pool.h"
 
 namespace colav::python {
 
 VectorEnvironment::VectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world,
-                                     int num_envs, std::uint64_t seed, int num_threads)
-    : envs_(settings.config, std::vector<TrainingScenarioConfig>(num_envs, world.config),
+                                     const ResolvedWorld& world2, double world2_share, int num_envs,
+                                     std::uint64_t seed, int num_threads)
+    : envs_(settings.config, MixedWorlds(world.config, world2.config, world2_share, num_envs),
             ThreadCountOrAllCores(num_threads), seed),
       outputs_{BatchArrays(num_envs, envs_.observation_size()),
                BatchArrays(num_envs, envs_.observation_size())} {}
@@ -61,9 +63,10 @@ py::dict VectorEnvironment::FinishedEpisodes() const {
 
 void BindVectorEnvironment(py::module_& module) {
   py::class_<VectorEnvironment>(module, "VectorEnvironment")
-      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, int, std::uint64_t, int>(),
-           py::arg("settings"), py::arg("world"), py::arg("num_envs"), py::arg("seed"),
-           py::arg("num_threads"))
+      .def(py::init<const ResolvedSettings&, const ResolvedWorld&, const ResolvedWorld&, double,
+                    int, std::uint64_t, int>(),
+           py::arg("settings"), py::arg("world"), py::arg("world2"), py::arg("world2_share"),
+           py::arg("num_envs"), py::arg("seed"), py::arg("num_threads"))
       .def(py::init<const ResolvedSettings&, const std::vector<Scenario>&, int>(),
            py::arg("settings"), py::arg("scenarios"), py::arg("num_threads"))
       .def_property_readonly("num_envs", &VectorEnvironment::num_envs)

@@ -20,9 +20,11 @@ namespace py = pybind11;
 
 class VectorEnvironment {
  public:
-  /// num_envs training worlds of `world` (episode k of world i from TrainingEpisodeSeed(seed, i,
-  /// k)) on num_threads threads (0: one per core).
-  VectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world, int num_envs,
+  /// num_envs training worlds, of `world` but for the world2_share of them (the last ones) of
+  /// `world2` (MixedWorlds; episode k of world i from TrainingEpisodeSeed(seed, i, k)), on
+  /// num_threads threads (0: one per core).
+  VectorEnvironment(const ResolvedSettings& settings, const ResolvedWorld& world,
+                    const ResolvedWorld& world2, double world2_share, int num_envs,
                     std::uint64_t seed, int num_threads);
   /// One world per scenario, replaying it in every episode.
   VectorEnvironment(const ResolvedSettings& settings, const std::vector<Scenario>& scenarios,

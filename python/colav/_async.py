@@ -4,8 +4,8 @@ the first batch_size done while the others go on stepping."""
 import numpy as np
 
 from . import _colav
-from ._envs import (_Closed, _check_options, _optional_seed, _resolve, _training_world, _values,
-                    _whole_number, _worlds)
+from ._envs import (_Closed, _check_options, _optional_seed, _resolve, _second_worlds,
+                    _training_world, _values, _whole_number, _worlds)
 from ._spaces import action_space, observation_space
 
 
@@ -14,8 +14,9 @@ class AsyncVectorEnv:
     asynchronous mode, envpool.make(..., num_envs=N, batch_size=B)).
 
     AsyncVectorEnv(num_envs=8, seed=0, batch_size=None, scenarios=None, num_threads=0,
-    world=None, **settings): the worlds of make_vec(num_envs, seed, scenarios=..., world=...,
-    **settings), with its `settings` and `world` attributes; batch_size defaults to num_envs.
+    world=None, world2=None, world2_share=0.0, **settings): the worlds of make_vec(num_envs, seed,
+    scenarios=..., world=..., world2=..., world2_share=..., **settings), with its `settings`,
+    `world`, `world2` and `world2_share` attributes; batch_size defaults to num_envs.
     num_threads (0: every core) counts the thread calling recv(), which steps worlds too while it
     waits.
 
@@ -38,11 +39,15 @@ class AsyncVectorEnv:
     """
 
     def __init__(self, num_envs=None, seed=0, *, batch_size=None, scenarios=None, num_threads=0,
-                 world=None, **settings):
+                 world=None, world2=None, world2_share=0.0, **settings):
         resolved = _resolve(settings, "colav.AsyncVectorEnv")
         training_world = _training_world(world, scenarios is not None, "colav.AsyncVectorEnv")
+        second_world, share = _second_worlds(world2, world2_share, scenarios is not None,
+                                             "colav.AsyncVectorEnv")
         self.settings = resolved.values
         self.world = _values(training_world)
+        self.world2 = _values(second_world)
+        self.world2_share = share
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         batch = count if batch_size is None else _whole_number("batch_size", batch_size, 1)
@@ -50,7 +55,8 @@ class AsyncVectorEnv:
             raise ValueError(f"batch_size: {batch} is more than the {count} worlds (num_envs)")
         if loaded is None:
             self._core = _colav.AsyncVectorEnvironment(
-                resolved, training_world, count, batch, _whole_number("seed", seed, 0), threads
+                resolved, training_world, second_world, share, count, batch,
+                _whole_number("seed", seed, 0), threads
             )
         else:
             self._core = _colav.AsyncVectorEnvironment(resolved, loaded, batch, threads)
@@ -114,8 +120,9 @@ class AsyncVectorEnv:
 
 
 def make_async(num_envs=None, seed=0, *, batch_size=None, scenarios=None, num_threads=0,
-               world=None, **settings):
+               world=None, world2=None, world2_share=0.0, **settings):
     """colav.AsyncVectorEnv(num_envs, seed, batch_size=..., scenarios=..., num_threads=...,
-    world=..., **settings)."""
+    world=..., world2=..., world2_share=..., **settings)."""
     return AsyncVectorEnv(num_envs, seed, batch_size=batch_size, scenarios=scenarios,
-                          num_threads=num_threads, world=world, **settings)
+                          num_threads=num_threads, world=world, world2=world2,
+                          world2_share=world2_share, **settings)

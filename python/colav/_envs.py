@@ -34,14 +34,14 @@ def _resolve(settings, origin):
     return _colav.resolve_settings(_setting_texts(settings), origin)
 
 
-def _resolve_world(world, origin):
-    """The training world of the `world` keyword ({world.* key without "world.": value}, as
-    train_ppo reads them), the paper's without it."""
+def _resolve_world(world, origin, keyword="world"):
+    """The training world of the `world` (or `world2`) keyword ({world.* key without "world.":
+    value}, as train_ppo reads its world.* or world2.* keys), the paper's without it."""
     if world is None:
         world = {}
     if not isinstance(world, dict):
-        raise TypeError(f"world: expected a dict of world settings, got {world!r}")
-    return _colav.resolve_world(_setting_texts(world), origin)
+        raise TypeError(f"{keyword}: expected a dict of world settings, got {world!r}")
+    return _colav.resolve_world(_setting_texts(world), origin, keyword)
 
 
 def _training_world(world, scenarios_given, origin):
@@ -53,6 +53,22 @@ def _training_world(world, scenarios_given, origin):
         raise ValueError(f"{origin}: world sets the training worlds, which the scenarios "
                          "replace: give one or the other")
     return None
+
+
+def _second_worlds(world2, world2_share, scenarios_given, origin):
+    """(the resolved second kind of world, its share) of the world2 and world2_share keywords:
+    the last round(world2_share * num_envs) worlds play world2, as train_ppo's world2.* keys and
+    world2.share make them; (None, 0.0) when the worlds replay scenarios, where either is an
+    error."""
+    if (isinstance(world2_share, bool) or not isinstance(world2_share, numbers.Real)
+            or not 0 <= world2_share <= 1):
+        raise ValueError(f"world2_share: expected a number in [0, 1], got {world2_share!r}")
+    if not scenarios_given:
+        return _resolve_world(world2, origin, "world2"), float(world2_share)
+    if world2 is not None or world2_share:
+        raise ValueError(f"{origin}: world2 and world2_share set training worlds, which the "
+                         "scenarios replace: give one or the other")
+    return None, 0.0
 
 
 def _scenario(scenario):
@@ -179,12 +195,16 @@ class Env(_EnvBase):
 class VectorEnv(_VectorEnvBase):
     """A batch of worlds stepped together in C++ on a thread pool, with the GIL released.
 
-    VectorEnv(num_envs=8, seed=0, scenarios=None, num_threads=0, world=None, **settings): num_envs
-    training worlds (episode k of world i is generated from the seed, i and k alone, as
-    colav.training_scenario(colav.training_episode_seed(seed, i, k), world=world)), or one world
-    per entry of `scenarios` (scenario file paths or colav.Scenario objects, e.g.
-    colav.training_scenario(s)) replaying it in every episode. num_threads 0 uses every core.
-    `settings` and `world` (every world generated with it) as for colav.Env.
+    VectorEnv(num_envs=8, seed=0, scenarios=None, num_threads=0, world=None, world2=None,
+    world2_share=0.0, **settings): num_envs training worlds (episode k of world i is generated
+    from the seed, i and k alone, as colav.training_scenario(colav.training_episode_seed(seed, i,
+    k), world=world)), or one world per entry of `scenarios` (scenario file paths or
+    colav.Scenario objects, e.g. colav.training_scenario(s)) replaying it in every episode.
+    num_threads 0 uses every core. `settings` and `world` (every world generated with it) as for
+    colav.Env. A mix of two kinds of world, as train_ppo's world2.* keys and world2.share make
+    it: the last round(world2_share * num_envs) worlds are generated with `world2` (a dict as
+    `world`) instead, e.g. world={"static_displacement_sd": 125},
+    world2={"moving_displacement_sd": 250}, world2_share=0.5 (the best_mixed recipe's worlds).
 
     step(actions [N, 2]) returns (obs float32 [N, 6 + 180*(1+scan_history)] ([N, 186] by
     default), reward float32 [N], terminated bool [N], truncated bool [N], info). float32 actions
@@ -204,16 +224,21 @@ class VectorEnv(_VectorEnvBase):
     render_mode = None
 
     def __init__(self, num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None,
-                 **settings):
+                 world2=None, world2_share=0.0, **settings):
         resolved = _resolve(settings, "colav.VectorEnv")
         training_world = _training_world(world, scenarios is not None, "colav.VectorEnv")
+        second_world, share = _second_worlds(world2, world2_share, scenarios is not None,
+                                             "colav.VectorEnv")
         self.settings = resolved.values
         self.world = _values(training_world)
+        self.world2 = _values(second_world)
+        self.world2_share = share
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         if loaded is None:
             self._core = _colav.VectorEnvironment(
-                resolved, training_world, count, _whole_number("seed", seed, 0), threads
+                resolved, training_world, second_world, share, count,
+                _whole_number("seed", seed, 0), threads
             )
         else:
             self._core = _colav.VectorEnvironment(resolved, loaded, threads)
@@ -252,7 +277,9 @@ def make(seed=0, *, scenario=None, world=None, **settings):
     return Env(seed, scenario=scenario, world=world, **settings)
 
 
-def make_vec(num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None, **settings):
-    """colav.VectorEnv(num_envs, seed, scenarios=..., num_threads=..., world=..., **settings)."""
+def make_vec(num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None, world2=None,
+             world2_share=0.0, **settings):
+    """colav.VectorEnv(num_envs, seed, scenarios=..., num_threads=..., world=..., world2=...,
+    world2_share=..., **settings)."""
     return VectorEnv(num_envs, seed, scenarios=scenarios, num_threads=num_threads, world=world,
-                     **settings)
+                     world2=world2, world2_share=world2_share, **settings)

@@ -117,3 +117,57 @@ def test_world_with_scenarios_is_refused():
 def test_world_must_be_a_dict():
     with pytest.raises(TypeError, match="world"):
         colav.make_vec(2, world=[("num_static", 22)])
+
+
+# best_mixed's training worlds (studies/best_worlds.yaml): circles crowded in world.*, vessels in
+# world2.*, half and half.
+CROWDED_CIRCLES = {"static_displacement_sd": 125}
+CROWDED_VESSELS = {"moving_displacement_sd": 250}
+
+
+@pytest.mark.parametrize("num_envs, share, second", [(8, 0.5, 4), (8, 0.375, 3), (3, 0.5, 2),
+                                                     (4, 0.1, 0), (2, 1.0, 2)])
+def test_world2_takes_its_share_of_the_last_worlds_as_train_ppo_does(num_envs, share, second):
+    # round(share * num_envs) worlds: 3 x 0.5 = 1.5 rounds up to 2, 4 x 0.1 = 0.4 down to 0.
+    kinds = [CROWDED_CIRCLES] * (num_envs - second) + [CROWDED_VESSELS] * second
+    for make in (colav.make_vec, colav.make_async):
+        envs = make(num_envs, seed=5, world=CROWDED_CIRCLES, world2=CROWDED_VESSELS,
+                    world2_share=share, max_steps=2)
+        assert envs.world2 == {**PAPER, **CROWDED_VESSELS} and envs.world2_share == share
+        obs, _ = envs.reset()
+        for episode in range(2):
+            scenarios = [colav.training_scenario(colav.training_episode_seed(5, i, episode),
+                                                 world=kind) for i, kind in enumerate(kinds)]
+            np.testing.assert_array_equal(obs, first_observations(scenarios))
+            for _ in range(2):
+                obs, *_ = envs.step(np.zeros((num_envs, 2), dtype=np.float32))
+
+
+def test_without_world2_every_world_is_of_world():
+    envs = colav.make_vec(2, world2_share=0.0, world=CIRCLES)
+    assert envs.world2 == PAPER and envs.world2_share == 0.0
+    alone, _ = colav.make_vec(4, seed=2, world=CIRCLES).reset()
+    unused, _ = colav.make_vec(4, seed=2, world=CIRCLES, world2=CROWDED_VESSELS).reset()
+    np.testing.assert_array_equal(alone, unused)  # no share: world2 plays nowhere
+
+
+@pytest.mark.parametrize("share", [-0.1, 1.5, float("nan"), "0.5", True])
+def test_a_bad_world2_share_is_refused(share):
+    with pytest.raises(ValueError, match=r"world2_share: expected a number in \[0, 1\]"):
+        colav.make_vec(2, world2_share=share)
+
+
+def test_a_bad_world2_names_its_world2_key():
+    with pytest.raises(ValueError, match="'world2.num_static'"):
+        colav.make_vec(2, world2={"num_static": 201}, world2_share=0.5)
+    with pytest.raises(TypeError, match="world2: expected a dict"):
+        colav.make_async(2, world2=[("num_static", 22)], world2_share=0.5)
+
+
+def test_world2_with_scenarios_is_refused():
+    scenario = colav.training_scenario(1)
+    with pytest.raises(ValueError, match="world2"):
+        colav.make_vec(scenarios=[scenario], world2={"num_static": 3})
+    with pytest.raises(ValueError, match="world2"):
+        colav.make_async(scenarios=[scenario], world2_share=0.5)
+    assert colav.make_vec(scenarios=[scenario]).world2 is None

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include <cmath>
 #include <sstream>
 #include <string>
 
@@ -129,7 +128,7 @@ void RequireWholeSequences(PpoRunOptions& options) {
 // A curriculum whose second stage no world would play.
 void RequireSecondWorldsShare(PpoRunOptions& options) {
   if (options.second_worlds_from_step > 0 &&
-      std::lround(options.second_worlds_share * options.ppo.n_envs) == 0) {
+      SecondKindWorlds(options.second_worlds_share, options.ppo.n_envs) == 0) {
     throw UserError(fmt::format(
         "world2.from_step = {}: no world plays world2.* (world2.share {} of {} worlds)",
         options.second_worlds_from_step, options.second_worlds_share, options.ppo.n_envs));
@@ -153,13 +152,9 @@ EnvironmentConfig AuthorsTrainingEnvironment() {
 
 std::vector<TrainingScenarioConfig> WorldScenarios(const PpoRunOptions& options,
                                                    std::int64_t step) {
-  const int n_envs = options.ppo.n_envs;
-  const int second = step < options.second_worlds_from_step
-                         ? 0
-                         : static_cast<int>(std::lround(options.second_worlds_share * n_envs));
-  std::vector<TrainingScenarioConfig> scenarios(n_envs - second, options.worlds);
-  scenarios.insert(scenarios.end(), second, options.second_worlds);
-  return scenarios;
+  const double second_share =
+      step < options.second_worlds_from_step ? 0.0 : options.second_worlds_share;
+  return MixedWorlds(options.worlds, options.second_worlds, second_share, options.ppo.n_envs);
 }
 
 OptionsBinding<PpoRunOptions> PpoRunBinding() {
