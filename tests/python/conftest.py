@@ -1,4 +1,4 @@
-"""Shared fixtures of the Python tests. CTest (tests/CMakeLists.txt) sets PYTHONPATH to the
+"""Shared fixtures and stand-ins of the Python tests. CTest (tests/CMakeLists.txt) sets PYTHONPATH to the
 build's python folder and COLAV_BIN_DIR, COLAV_SOURCE_DIR, COLAV_GOLDEN_DIR."""
 
 import os
@@ -6,6 +6,7 @@ import pathlib
 import subprocess
 
 import pytest
+import torch
 
 SOURCE_DIR = pathlib.Path(os.environ.get("COLAV_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 BIN_DIR = pathlib.Path(os.environ.get("COLAV_BIN_DIR", SOURCE_DIR / "build" / "bin"))
@@ -35,3 +36,20 @@ def deep_vae(tmp_path_factory):
     run_program("train_vae", "--data", folder / "data.h5", "--model", "deep", "--epochs", 1,
                 "--seeds", 1, "--out", folder / "vae")
     return folder / "data.h5", folder / "vae" / "seed_0" / "encoder.pt"
+
+
+class RecurrentPolicyStandIn(torch.nn.Module):
+    """What train_ppo exports for a recurrent policy, but `step`: recurrent_size (1),
+    initial_state(B) (zeros) and a forward that refuses. Subclasses define step(obs, state) ->
+    (action, next state)."""
+
+    def __init__(self):
+        super().__init__()
+        self.recurrent_size = 1
+
+    @torch.jit.export
+    def initial_state(self, batch: int):
+        return torch.zeros(batch, 1)
+
+    def forward(self, obs):
+        raise RuntimeError("recurrent policy: call step(obs, state)")

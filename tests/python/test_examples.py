@@ -7,7 +7,7 @@ import sys
 import pytest
 import torch
 
-from conftest import SCENARIO_FILES, SOURCE_DIR
+from conftest import SCENARIO_FILES, SOURCE_DIR, RecurrentPolicyStandIn
 
 EXAMPLES = SOURCE_DIR / "python" / "examples"
 
@@ -42,25 +42,14 @@ def test_run_policy(tmp_path):
     assert "over 1 episodes (scenario files" in output
 
 
-class CountingPolicy(torch.nn.Module):
-    """A recurrent policy as train_ppo exports one (recurrent_size, initial_state, step): full
-    surge, and full rudder for the first 5 steps of each episode, which only the state counts."""
-
-    def __init__(self):
-        super().__init__()
-        self.recurrent_size = 1
-
-    @torch.jit.export
-    def initial_state(self, batch: int):
-        return torch.zeros(batch, 1)
+class CountingPolicy(RecurrentPolicyStandIn):
+    """A recurrent policy: full surge, and full rudder for the first 5 steps of each episode,
+    which only the state counts."""
 
     @torch.jit.export
     def step(self, obs, state):
         rudder = (state < 5).float()
         return torch.cat([torch.ones_like(rudder), rudder], 1), state + 1
-
-    def forward(self, obs):
-        raise RuntimeError("recurrent policy: call step(obs, state)")
 
 
 def test_run_policy_steps_a_recurrent_policy_from_each_episodes_state(tmp_path):

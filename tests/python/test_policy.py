@@ -6,27 +6,17 @@ import pytest
 import torch
 
 import colav
+from conftest import RecurrentPolicyStandIn
 
 
-class CountingPolicy(torch.nn.Module):
-    """A recurrent policy as train_ppo exports one: its action is the number of steps its memory
-    has seen (surge) and the observation's first value (rudder)."""
-
-    def __init__(self):
-        super().__init__()
-        self.recurrent_size = 1
-
-    @torch.jit.export
-    def initial_state(self, batch: int):
-        return torch.zeros(batch, 1)
+class CountingPolicy(RecurrentPolicyStandIn):
+    """A recurrent policy whose action is the number of steps its memory has seen (surge) and the
+    observation's first value (rudder)."""
 
     @torch.jit.export
     def step(self, obs, state):
         state = state + 1
         return torch.cat([state, obs[:, :1]], 1), state
-
-    def forward(self, obs):
-        raise RuntimeError("recurrent policy: call step(obs, state)")
 
 
 class HistoryPolicy(torch.nn.Module):
