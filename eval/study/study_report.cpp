@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/run_diagnostics.h"
 #include "eval/study/study_figures.h"
 #include "src/atomic_file.h"
 #include "src/rate_interval.h"
@@ -274,15 +275,51 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
   md << "\n![the beta sweep](" << beta << ")\n";
 }
 
-// The figures that the study's figure jobs drew (job_graph.h): the VAE figures, the training
-// curves of each configuration.
-void JobFigures(std::ostringstream& md, const StudySpec& spec, const std::filesystem::path& out) {
+// How each configuration's runs ended (run_diagnostics.h), seed by seed: into the report's
+// table and summary.json's "runs".
+void RunsTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
+               const std::filesystem::path& out) {
+  md << "\nHow the runs ended, seed by seed: wall-clock, the action distribution's standard "
+        "deviation at the last update (far past 1, the clipped actions steer bang-bang), and the "
+        "training episodes' collisions and time-outs over the last tenth of the steps (sampled "
+        "actions, training worlds).\n\n"
+        "| configuration | wall-clock s | std at the end | training collisions % | training "
+        "time-outs % |\n|---|---|---|---|---|\n";
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    std::vector<std::string> walls, stds, collisions, time_outs;
+    for (int k = 0; k < spec.ppo_seeds; ++k) {
+      const RunDiagnostics run =
+          ReadRunDiagnostics(out / "ppo" / config.name / ("seed_" + std::to_string(k)));
+      walls.push_back(fmt::format("{:.0f}", run.wall_s));
+      stds.push_back(fmt::format("{:.3g}", run.final_std));
+      collisions.push_back(fmt::format("{:.1f}", run.late_collisions));
+      time_outs.push_back(fmt::format("{:.1f}", run.late_time_outs));
+      json["runs"][config.name].push_back({{"wall_s", run.wall_s},
+                                           {"final_std", run.final_std},
+                                           {"late_episodes", run.late_episodes},
+                                           {"late_collisions", run.late_collisions},
+                                           {"late_time_outs", run.late_time_outs}});
+    }
+    md << fmt::format("| {} | {} | {} | {} | {} |\n", config.name, fmt::join(walls, ", "),
+                      fmt::join(stds, ", "), fmt::join(collisions, ", "),
+                      fmt::join(time_outs, ", "));
+  }
+}
+
+// The VAE figures, when the study's figure jobs drew them (job_graph.h).
+void VaeFigures(std::ostringstream& md, const std::filesystem::path& out) {
   const std::filesystem::path vae = VaeFiguresFolder();
   if (std::filesystem::exists(out / vae / "latent_kde.png")) {
     md << "\n## The VAE figures\n\n![decoder padding](" << (vae / "padding_comparison.png").string()
        << ")\n\n![latent densities](" << (vae / "latent_kde.png").string() << ")\n";
   }
+}
+
+// How the runs ended, and the training curves of each configuration its figure job drew.
+void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
+                     const std::filesystem::path& out) {
   md << "\n## Training\n";
+  RunsTable(md, json, spec, out);
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     const std::filesystem::path png = TrainingFigurePath(config.name);
     if (std::filesystem::exists(out / png)) {
@@ -362,7 +399,8 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     OutcomeTable(md, report);
     if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);
   }
-  JobFigures(md, spec, out);
+  VaeFigures(md, out);
+  TrainingSection(md, json, spec, out);
   WriteTextFileAtomically(out / "summary.json", json.dump(2) + "\n");
   WriteTextFileAtomically(out / "REPORT.md", md.str());
 }

@@ -49,6 +49,8 @@ done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
 grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REPORT.md" ||
   fail "no return in the report's probability of improvement"
+grep -q "| configuration | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
+  fail "no table of how the runs ended"
 grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import csv, json, os, statistics, sys
@@ -76,6 +78,11 @@ for name, episodes in (("study", 6), ("paper", 4)):
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
+# How each run ended: its seeds' wall-clock, final std and late training episodes.
+assert {name: len(runs) for name, runs in s["runs"].items()} == {"shallow_locked": 2, "baseline": 2}
+for run in (run for runs in s["runs"].values() for run in runs):
+    assert run["wall_s"] > 0 and run["final_std"] > 0 and run["late_episodes"] >= 1, run
+    assert 0 <= run["late_collisions"] <= 100 and 0 <= run["late_time_outs"] <= 100, run
 PY
 # A configuration's own steps reach its runs and the report.
 grep -q "total_steps: 3072" "$WORK/run/ppo/shallow_locked/seed_1/config.yaml" &&
