@@ -67,6 +67,8 @@ class Policy:
         worlds whose observation starts an episode, whose memory restarts from 0. The memories
         are created, at 0, by the first call, for N worlds; a memoryless policy ignores both."""
         obs = np.asarray(obs, dtype=np.float32)
+        if obs.ndim != 2:
+            raise ValueError(f"Policy.act: obs of shape {obs.shape}, not [worlds, observation]")
         rows = np.arange(len(obs)) if worlds is None else np.asarray(worlds, dtype=np.int64)
         # The exported policies run batches of at least two rows (evaluate does the same).
         batch = rows if len(rows) > 1 else np.repeat(rows, 2)

@@ -87,3 +87,5 @@ def test_refuses_what_it_cannot_run(tmp_path):
         policy.act(observations(4))
     with pytest.raises(ValueError, match=r"episode_starts of shape \(2,\), not \(3,\)"):
         policy.act(observations(3), [True, False])
+    with pytest.raises(ValueError, match=r"obs of shape \(186,\), not \[worlds, observation\]"):
+        policy.act(observations(1)[0])
