@@ -111,10 +111,9 @@ def main():
         fail(f"{args.out}: no such folder")
     rows = []
     for index, kinds in sorted(episodes.items()):
-        path = policies[index]
+        policy = colav.Policy(policies[index])  # replay restarts its memory at each episode
         for kind, scenario_seeds in kinds.items():
             for scenario_seed in scenario_seeds:
-                policy = colav.Policy(path)  # a new memory for each episode
                 turns, speed, nearest, timed_out, goal = replay(policy, scenario_seed)
                 alike = timed_out if kind == "time_out" else goal
                 rows.append(dict(zip(COLUMNS, (f"{args.config}{SEED_MARK}{index}", scenario_seed,

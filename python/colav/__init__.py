@@ -77,7 +77,7 @@ def evaluation_scenarios(count=100, seed=0):
 
 __all__ = [
     "ACTION_SIZE", "OBSERVATION_SIZE", "AsyncVectorEnv", "Box", "Env", "Policy", "Scenario",
-    "UserError", "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async", "make_vec",
-    "evaluation_scenario_seeds", "evaluation_scenarios", "training_episode_seed",
+    "UserError", "VectorEnv", "env_settings", "gymnasium", "load_scenario", "make", "make_async",
+    "make_vec", "evaluation_scenario_seeds", "evaluation_scenarios", "training_episode_seed",
     "training_scenario", "world_settings",
 ]

@@ -4,8 +4,8 @@ the first batch_size done while the others go on stepping."""
 import numpy as np
 
 from . import _colav
-from ._envs import (_Closed, _check_options, _optional_seed, _resolve, _second_worlds,
-                    _training_world, _values, _whole_number, _worlds)
+from ._envs import (_Closed, _check_options, _optional_seed, _resolve, _vector_worlds,
+                    _whole_number, _worlds)
 from ._spaces import action_space, observation_space
 
 
@@ -41,13 +41,9 @@ class AsyncVectorEnv:
     def __init__(self, num_envs=None, seed=0, *, batch_size=None, scenarios=None, num_threads=0,
                  world=None, world2=None, world2_share=0.0, **settings):
         resolved = _resolve(settings, "colav.AsyncVectorEnv")
-        training_world = _training_world(world, scenarios is not None, "colav.AsyncVectorEnv")
-        second_world, share = _second_worlds(world2, world2_share, scenarios is not None,
-                                             "colav.AsyncVectorEnv")
+        training_world, second_world, share = _vector_worlds(
+            self, world, world2, world2_share, scenarios is not None, "colav.AsyncVectorEnv")
         self.settings = resolved.values
-        self.world = _values(training_world)
-        self.world2 = _values(second_world)
-        self.world2_share = share
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         batch = count if batch_size is None else _whole_number("batch_size", batch_size, 1)

@@ -71,6 +71,17 @@ def _second_worlds(world2, world2_share, scenarios_given, origin):
     return None, 0.0
 
 
+def _vector_worlds(envs, world, world2, world2_share, scenarios_given, origin):
+    """The vector environments' training worlds, resolved: sets envs.world, envs.world2 and
+    envs.world2_share and returns (world, world2, share) for the C++ constructor."""
+    training_world = _training_world(world, scenarios_given, origin)
+    second_world, share = _second_worlds(world2, world2_share, scenarios_given, origin)
+    envs.world = _values(training_world)
+    envs.world2 = _values(second_world)
+    envs.world2_share = share
+    return training_world, second_world, share
+
+
 def _scenario(scenario):
     """A Scenario from a scenario file path, or the Scenario itself."""
     if isinstance(scenario, _colav.Scenario):
@@ -226,13 +237,9 @@ class VectorEnv(_VectorEnvBase):
     def __init__(self, num_envs=None, seed=0, *, scenarios=None, num_threads=0, world=None,
                  world2=None, world2_share=0.0, **settings):
         resolved = _resolve(settings, "colav.VectorEnv")
-        training_world = _training_world(world, scenarios is not None, "colav.VectorEnv")
-        second_world, share = _second_worlds(world2, world2_share, scenarios is not None,
-                                             "colav.VectorEnv")
+        training_world, second_world, share = _vector_worlds(
+            self, world, world2, world2_share, scenarios is not None, "colav.VectorEnv")
         self.settings = resolved.values
-        self.world = _values(training_world)
-        self.world2 = _values(second_world)
-        self.world2_share = share
         threads = _whole_number("num_threads", num_threads, 0)
         count, loaded = _worlds(num_envs, scenarios)
         if loaded is None:

@@ -72,22 +72,26 @@ int Main(int argc, char** argv) {
   torch::set_num_threads(1);
 
   const colav::PpoOptions options;
+  constexpr int kRecurrentSize = 32;
+  const colav::RolloutBuffer memoryless_rollout = SyntheticRollout(options, 0);
+  const colav::RolloutBuffer recurrent_rollout = SyntheticRollout(options, kRecurrentSize);
   const double minibatches_per_update =
-      options.n_epochs * static_cast<double>(options.n_steps) * options.n_envs / options.batch_size;
+      options.n_epochs * static_cast<double>(memoryless_rollout.size()) / options.batch_size;
   const std::vector<Configuration> configurations = {
       {"baseline", colav::ExtractorKind::kBaseline, false},
       {"shallow_locked", colav::ExtractorKind::kVaeShallow, true},
       {"shallow_unlocked", colav::ExtractorKind::kVaeShallow, false},
       {"deep_locked", colav::ExtractorKind::kVaeDeep, true},
       {"deep_unlocked", colav::ExtractorKind::kVaeDeep, false},
-      {"shallow_locked_recurrent32", colav::ExtractorKind::kVaeShallow, true, 32}};
+      {"shallow_locked_recurrent32", colav::ExtractorKind::kVaeShallow, true, kRecurrentSize}};
   std::vector<std::string> headlines;
   for (const Configuration& configuration : configurations) {
     colav::ActorCriticOptions model_options;
     model_options.extractor.kind = configuration.kind;  // untrained encoder: same cost
     model_options.extractor.locked = configuration.locked;
     model_options.recurrent_size = configuration.recurrent_size;
-    const colav::RolloutBuffer buffer = SyntheticRollout(options, configuration.recurrent_size);
+    const colav::RolloutBuffer& buffer =
+        configuration.recurrent_size > 0 ? recurrent_rollout : memoryless_rollout;
     colav::PpoUpdater updater(colav::ActorCritic(model_options), options);
     auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
     updater.Update(buffer, generator);  // warm-up
