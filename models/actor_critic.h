@@ -14,7 +14,8 @@
 // extractor and the trunks, shared by actor and critic, turns the features x_t and the state
 // h_{t-1} into h_t, and both trunks read [x_t, h_t] (the features stay in view, so the memory
 // adds to the memoryless policy rather than replacing its input). The state is 0 at the start of
-// every episode. Its weights are orthogonal (gain 1, CleanRL's recurrent PPO), its biases 0.
+// every episode. With value_trains_memory false the critic reads it detached. Its weights are
+// orthogonal (gain 1, CleanRL's recurrent PPO), its biases 0.
 //
 // Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
 // mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std; the GRU's are
@@ -44,6 +45,10 @@ struct ActorCriticOptions {
   bool squash_actions = false;
   /// Size of the GRU state between the extractor and the trunks; 0: no memory (the paper's).
   std::int64_t recurrent_size = 0;
+  /// Whether the critic's loss trains the GRU as the actor's does (CleanRL's recurrent PPO). false:
+  /// the critic still reads the state, detached, and only the actor's loss trains the memory
+  /// (SB3-contrib's RecurrentPPO with a shared LSTM), so it keeps what steering needs.
+  bool value_trains_memory = true;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 };
 

@@ -323,8 +323,10 @@ void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log
   critic_.Backward(TrunkInput(), d_value, B, input_gradient ? d_features_critic_.data() : nullptr);
   std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
   if (!input_gradient) return;
-  // Both heads read the same input: their gradients add up.
-  const int n = actor_.in_size() * B;
+  // Both heads read the same input: their gradients add up (the critic's state rows only when
+  // its loss trains the memory).
+  const int n =
+      (gru_ && !model_->options().value_trains_memory ? features_dim_ : actor_.in_size()) * B;
   for (int i = 0; i < n; ++i) d_features_actor_[i] += d_features_critic_[i];
   if (gru_) BackwardRecurrent(d_features_actor_.data(), B);
   if (!extractor_trainable_) return;

@@ -137,15 +137,17 @@ INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticPredictTest,
                                            std::tuple{ExtractorKind::kVaeDeep, 3}));
 
 // A recurrent model on 3 sequences of 4 steps (time-major samples), an episode starting at step 2
-// of sequence 1: the fast passes against autograd through forward_recurrent step by step.
-class FastRecurrentTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool>> {};
+// of sequence 1: the fast passes against autograd through forward_recurrent step by step, with
+// the critic's loss training the memory or not (value_trains_memory).
+class FastRecurrentTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, bool>> {};
 
 TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
-  const auto [kind, locked] = GetParam();
+  const auto [kind, locked, value_trains_memory] = GetParam();
   constexpr int kSequences = 3, kSteps = 4, kState = 5, B = kSequences * kSteps;
   testing_util::TemporaryFolder directory;
   ActorCriticOptions options = Options(kind, directory.path(), locked);
   options.recurrent_size = kState;
+  options.value_trains_memory = value_trains_memory;
   ActorCritic model(options);
   FastActorCritic fast(model, kBatch);
   ASSERT_EQ(fast.recurrent_size(), kState);
@@ -212,8 +214,10 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Extractors, FastRecurrentTest,
-                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
-                                           std::tuple{ExtractorKind::kVaeShallow, true}));
+                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false, true},
+                                           std::tuple{ExtractorKind::kVaeShallow, true, true},
+                                           std::tuple{ExtractorKind::kBaseline, false, false},
+                                           std::tuple{ExtractorKind::kVaeShallow, true, false}));
 
 TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   std::vector<float> x;

@@ -138,4 +138,31 @@ TEST(ActorCriticTest, ReferenceHeadRedrawsFcMuOrthogonalAndAddsARelu) {
 }
 
 }  // namespace
+// The critic's loss reaches the GRU only with value_trains_memory; the actor's always does, and
+// both settings compute the same forward.
+TEST(ActorCriticTest, ValueTrainsMemoryDecidesWhetherTheCriticLossReachesTheGru) {
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  torch::manual_seed(2);
+  const torch::Tensor observations = torch::rand({3, kObservationSize});
+  const torch::Tensor states = torch::randn({3, 4});
+  const auto gru_gradient = [&](bool value_trains_memory, bool actor_loss) {
+    options.value_trains_memory = value_trains_memory;
+    ActorCritic model(options);
+    const auto [mean, value, next] = model->forward_recurrent(observations, states);
+    (actor_loss ? mean.sum() : value.sum()).backward();
+    const torch::Tensor gradient = model->recurrent()->weight_ih.grad();  // undefined: none
+    return std::pair{gradient.defined() ? gradient.abs().sum().item<float>() : 0.0f,
+                     std::tuple{mean.detach(), value.detach(), next.detach()}};
+  };
+  const auto [critic_trained, outputs] = gru_gradient(true, false);
+  const auto [critic_detached, detached_outputs] = gru_gradient(false, false);
+  EXPECT_GT(critic_trained, 0.0f);
+  EXPECT_EQ(critic_detached, 0.0f);
+  EXPECT_GT(gru_gradient(false, true).first, 0.0f);
+  EXPECT_TRUE(torch::equal(std::get<0>(outputs), std::get<0>(detached_outputs)));
+  EXPECT_TRUE(torch::equal(std::get<1>(outputs), std::get<1>(detached_outputs)));
+  EXPECT_TRUE(torch::equal(std::get<2>(outputs), std::get<2>(detached_outputs)));
+}
+
 }  // namespace colav

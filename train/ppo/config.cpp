@@ -125,6 +125,14 @@ void RequireWholeSequences(PpoRunOptions& options) {
   }
 }
 
+// A setting of the memory's training without a memory.
+void RequireMemoryForItsTraining(PpoRunOptions& options) {
+  if (options.model.recurrent_size == 0 && !options.model.value_trains_memory) {
+    throw UserError(
+        "policy.value_trains_memory = false needs a memory (policy.recurrent_size > 0)");
+  }
+}
+
 // A curriculum whose second stage no world would play.
 void RequireSecondWorldsShare(PpoRunOptions& options) {
   if (options.second_worlds_from_step > 0 &&
@@ -242,6 +250,11 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "(0 at each episode's start) both read beside the features; 0: none (the paper's)",
           0, 1024)
       .Bool(
+          "policy.value_trains_memory",
+          [](Run & o) -> auto& { return o.model.value_trains_memory; },
+          "whether the critic's loss trains the memory as the actor's does; false: the critic "
+          "reads the state detached (SB3-contrib's shared LSTM)")
+      .Bool(
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
           "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "
           "it to [-1, 1]; the entropy bonus is then the bounded distribution's")
@@ -302,6 +315,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
       .Then(RequireWholeSequences)
+      .Then(RequireMemoryForItsTraining)
       .Then(DeriveModelSettings);
   return binding;
 }

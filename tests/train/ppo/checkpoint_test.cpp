@@ -228,6 +228,26 @@ TEST(PpoCheckpointTest, ExtendedRecurrentRunEqualsTheUninterruptedRun) {
   EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
 }
 
+// policy.value_trains_memory reaches the trained model: the same run with the critic's loss kept
+// out of the GRU learns other weights.
+TEST(PpoCheckpointTest, ValueTrainsMemoryReachesTheTrainedMemory) {
+  testing_util::TemporaryFolder directory;
+  const auto recurrent_run = [&](const std::string& name, const std::string& value_trains_memory) {
+    Config config = ShortEpisodes(160);
+    config.Set("policy.recurrent_size", "4", "test");
+    config.Set("ppo.sequence_length", "4", "test");
+    config.Set("policy.value_trains_memory", value_trains_memory, "test");
+    std::filesystem::create_directories(directory.path() / name);
+    Train(config, directory.path() / name, /*resume=*/false);
+    return torch::jit::load((directory.path() / name / "policy.pt").string());
+  };
+  const torch::Tensor shared =
+      recurrent_run("shared", "true").attr("recurrent_weight_ih").toTensor();
+  const torch::Tensor detached =
+      recurrent_run("detached", "false").attr("recurrent_weight_ih").toTensor();
+  EXPECT_FALSE(torch::equal(shared, detached));
+}
+
 // The reward scaler's returns run across the rollouts and episodes.
 TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
   testing_util::TemporaryFolder directory;
