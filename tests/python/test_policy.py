@@ -65,6 +65,33 @@ def test_memoryless_actions_of_chosen_worlds(tmp_path):
     np.testing.assert_array_equal(policy.act(obs, worlds=[2, 0])[:, 0], [4, 0])
 
 
+class ConvPolicy(torch.nn.Module):
+    """A memoryless policy with a circular convolution over the scan, as the trained ones have:
+    LibTorch runs one row through it with other rounding than a batch's."""
+
+    def __init__(self):
+        super().__init__()
+        self.conv = torch.nn.Conv1d(1, 3, 45, padding=22, padding_mode="circular")
+        self.head = torch.nn.Linear(6 + 3 * 180, 2)
+
+    def forward(self, obs):
+        scans = self.conv(obs[:, 6:].unsqueeze(1)).flatten(1)
+        return self.head(torch.cat([obs[:, :6], scans], 1))
+
+
+def test_one_world_acts_as_evaluate_acts_it(tmp_path):
+    """evaluate runs single rows as batches of two, and so does Policy.act."""
+    torch.manual_seed(0)
+    conv = torch.jit.script(ConvPolicy())
+    policy = colav.Policy(save(conv, tmp_path / "conv.pt"))
+    obs = np.random.default_rng(0).random((3, colav.OBSERVATION_SIZE), dtype=np.float32)
+    with torch.no_grad():
+        single = conv(torch.from_numpy(obs[[1]])).numpy()
+        pair = conv(torch.from_numpy(obs[[1, 1]])).numpy()[:1]
+    assert not np.array_equal(single, pair)  # else this test could not fail
+    np.testing.assert_array_equal(policy.act(obs, worlds=[1]), pair)
+
+
 def test_a_recurrent_policy_keeps_one_memory_per_world(tmp_path):
     policy = colav.Policy(save(CountingPolicy(), tmp_path / "policy.pt"))
     assert policy.recurrent_size == 1
