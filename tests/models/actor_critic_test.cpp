@@ -137,7 +137,6 @@ TEST(ActorCriticTest, ReferenceHeadRedrawsFcMuOrthogonalAndAddsARelu) {
       source["fc_mu.weight"]));
 }
 
-}  // namespace
 // The critic's loss reaches the GRU only with value_trains_memory; the actor's always does, and
 // both settings compute the same forward.
 TEST(ActorCriticTest, ValueTrainsMemoryDecidesWhetherTheCriticLossReachesTheGru) {
@@ -165,4 +164,5 @@ TEST(ActorCriticTest, ValueTrainsMemoryDecidesWhetherTheCriticLossReachesTheGru)
   EXPECT_TRUE(torch::equal(std::get<2>(outputs), std::get<2>(detached_outputs)));
 }
 
+}  // namespace
 }  // namespace colav
