@@ -123,10 +123,9 @@ std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward
   TORCH_CHECK(recurrent_, "forward_recurrent needs a model with recurrent_size > 0");
   const torch::Tensor features = features_extractor_->forward(observations);
   const torch::Tensor next_states = recurrent_->forward(features, states);
-  const torch::Tensor value_states =
-      options_.value_trains_memory ? next_states : next_states.detach();
   const torch::Tensor actor_input = torch::cat({features, next_states}, 1);
-  const torch::Tensor critic_input = torch::cat({features, value_states}, 1);
+  const torch::Tensor critic_input =
+      options_.value_trains_memory ? actor_input : torch::cat({features, next_states.detach()}, 1);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(actor_input)),
           value_net_->forward(mlp_extractor_->value_net->forward(critic_input)), next_states};
 }
