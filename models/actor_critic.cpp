@@ -70,9 +70,16 @@ ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::mov
   features_extractor_ = register_module("features_extractor", FeatureExtractor(options_.extractor));
   const std::int64_t features_dim = features_extractor_->features_dim();
   TORCH_CHECK(options_.recurrent_size >= 0, "recurrent_size must not be negative");
+  TORCH_CHECK(!options_.separate_critic_memory ||
+                  (options_.recurrent_size > 0 && options_.value_trains_memory),
+              "a separate critic memory needs recurrent_size > 0 and value_trains_memory");
   if (options_.recurrent_size > 0) {
     recurrent_ =
         register_module("recurrent", torch::nn::GRUCell(features_dim, options_.recurrent_size));
+  }
+  if (options_.separate_critic_memory) {
+    critic_recurrent_ = register_module("critic_recurrent",
+                                        torch::nn::GRUCell(features_dim, options_.recurrent_size));
   }
   mlp_extractor_ = register_module(
       "mlp_extractor", MlpExtractor(features_dim + options_.recurrent_size, options_.hidden_sizes));
@@ -102,11 +109,13 @@ void ActorCriticImpl::Initialise() {
   InitTrunk(mlp_extractor_->value_net, generator);
   InitLinear(action_net_, kActionGain, generator);
   InitLinear(value_net_, kValueGain, generator);
-  if (recurrent_) {  // last: the memoryless models draw exactly what they drew before
-    OrthogonalInit(recurrent_->weight_ih, kRecurrentGain, generator);
-    OrthogonalInit(recurrent_->weight_hh, kRecurrentGain, generator);
-    recurrent_->bias_ih.zero_();
-    recurrent_->bias_hh.zero_();
+  // Last: the memoryless models draw exactly what they drew before, the shared memory too.
+  for (torch::nn::GRUCell* cell : {&recurrent_, &critic_recurrent_}) {
+    if (!*cell) continue;
+    OrthogonalInit((*cell)->weight_ih, kRecurrentGain, generator);
+    OrthogonalInit((*cell)->weight_hh, kRecurrentGain, generator);
+    (*cell)->bias_ih.zero_();
+    (*cell)->bias_hh.zero_();
   }
 }
 
@@ -122,10 +131,18 @@ std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward
     const torch::Tensor& observations, const torch::Tensor& states) {
   TORCH_CHECK(recurrent_, "forward_recurrent needs a model with recurrent_size > 0");
   const torch::Tensor features = features_extractor_->forward(observations);
-  const torch::Tensor next_states = recurrent_->forward(features, states);
-  const torch::Tensor actor_input = torch::cat({features, next_states}, 1);
-  const torch::Tensor critic_input =
-      options_.value_trains_memory ? actor_input : torch::cat({features, next_states.detach()}, 1);
+  const std::int64_t H = options_.recurrent_size;
+  const torch::Tensor actor_state = recurrent_->forward(features, states.narrow(1, 0, H));
+  const torch::Tensor actor_input = torch::cat({features, actor_state}, 1);
+  torch::Tensor critic_input = actor_input;
+  torch::Tensor next_states = actor_state;
+  if (critic_recurrent_) {
+    const torch::Tensor critic_state = critic_recurrent_->forward(features, states.narrow(1, H, H));
+    critic_input = torch::cat({features, critic_state}, 1);
+    next_states = torch::cat({actor_state, critic_state}, 1);
+  } else if (!options_.value_trains_memory) {
+    critic_input = torch::cat({features, actor_state.detach()}, 1);
+  }
   return {action_net_->forward(mlp_extractor_->policy_net->forward(actor_input)),
           value_net_->forward(mlp_extractor_->value_net->forward(critic_input)), next_states};
 }

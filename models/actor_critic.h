@@ -14,12 +14,15 @@
 // extractor and the trunks, shared by actor and critic, turns the features x_t and the state
 // h_{t-1} into h_t, and both trunks read [x_t, h_t] (the features stay in view, so the memory
 // adds to the memoryless policy rather than replacing its input). The state is 0 at the start of
-// every episode. With value_trains_memory false the critic reads it detached. Its weights are
-// orthogonal (gain 1, CleanRL's recurrent PPO), its biases 0.
+// every episode. With value_trains_memory false the critic reads it detached. With
+// separate_critic_memory the critic has a GRU of its own (SB3-contrib's RecurrentPPO default), the
+// actor's GRU only the actor's loss trains, and a step's state is [actor's state, critic's state].
+// Their weights are orthogonal (gain 1, CleanRL's recurrent PPO), their biases 0.
 //
 // Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
 // mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std; the GRU's are
-// recurrent.{weight_ih, weight_hh, bias_ih, bias_hh} (gates in PyTorch's order r, z, n).
+// recurrent.{weight_ih, weight_hh, bias_ih, bias_hh} (gates in PyTorch's order r, z, n), the
+// critic's own critic_recurrent.*.
 #pragma once
 
 #include <torch/torch.h>
@@ -49,7 +52,13 @@ struct ActorCriticOptions {
   /// the critic still reads the state, detached, and only the actor's loss trains the memory
   /// (SB3-contrib's RecurrentPPO with a shared LSTM), so it keeps what steering needs.
   bool value_trains_memory = true;
+  /// Whether the critic reads a GRU of its own (SB3-contrib's RecurrentPPO default) instead of the
+  /// actor's; each trains on its own loss. Needs recurrent_size > 0 and value_trains_memory.
+  bool separate_critic_memory = false;
   std::uint64_t seed = 0;  ///< seeds the initialisation
+
+  /// Values of a step's state: recurrent_size, twice that with separate_critic_memory.
+  std::int64_t state_size() const { return recurrent_size * (separate_critic_memory ? 2 : 1); }
 };
 
 /// The two separate trunks (SB3's MlpExtractor).
@@ -70,9 +79,9 @@ class ActorCriticImpl : public torch::nn::Module {
   /// (action mean [B, 2], value [B, 1]).
   std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
 
-  /// One step of a recurrent policy: observations [B, n] and states [B, recurrent_size] (the
-  /// state before these observations; 0 at an episode's start) -> (action mean [B, 2], value
-  /// [B, 1], state after [B, recurrent_size]).
+  /// One step of a recurrent policy: observations [B, n] and states [B, state_size] (the state
+  /// before these observations; 0 at an episode's start) -> (action mean [B, 2], value [B, 1],
+  /// state after [B, state_size]).
   std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> forward_recurrent(
       const torch::Tensor& observations, const torch::Tensor& states);
 
@@ -85,8 +94,11 @@ class ActorCriticImpl : public torch::nn::Module {
   torch::nn::Linear& action_net() { return action_net_; }
   torch::nn::Linear& value_net() { return value_net_; }
   torch::Tensor& log_std() { return log_std_; }
-  /// The GRU cell; empty unless recurrent_size > 0.
+  /// The GRU cell the actor reads (and the critic, unless separate_critic_memory); empty unless
+  /// recurrent_size > 0.
   torch::nn::GRUCell& recurrent() { return recurrent_; }
+  /// The critic's own GRU cell; empty unless separate_critic_memory.
+  torch::nn::GRUCell& critic_recurrent() { return critic_recurrent_; }
 
  private:
   void Initialise();
@@ -94,6 +106,7 @@ class ActorCriticImpl : public torch::nn::Module {
   ActorCriticOptions options_;
   FeatureExtractor features_extractor_{nullptr};
   torch::nn::GRUCell recurrent_{nullptr};
+  torch::nn::GRUCell critic_recurrent_{nullptr};
   MlpExtractor mlp_extractor_{nullptr};
   torch::nn::Linear action_net_{nullptr};
   torch::nn::Linear value_net_{nullptr};

@@ -50,6 +50,15 @@ void GatherRows(const float* const* rows, int count, int offset, int width, int 
   }
 }
 
+// Writes the states [H, B] (feature-major) into the first H values of the rows of the row-major
+// [B, stride] array `rows`.
+void ScatterStates(const float* states, int H, int B, int stride, float* rows) {
+  for (int b = 0; b < B; ++b) {
+    for (int j = 0; j < H; ++j)
+      rows[static_cast<std::ptrdiff_t>(b) * stride + j] = states[j * B + b];
+  }
+}
+
 // dst [inner, outer, block] = src [outer, inner, block] with its first two axes swapped: moves
 // encodings between the perception stack's [P, scans, B] and the feature rows' [scans, P, B].
 void SwapBlockAxes(const float* src, int outer, int inner, int block, float* dst) {
@@ -173,6 +182,7 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
       features_(static_cast<std::size_t>(features_dim_) * max_batch),
       trunk_input_(recurrent_size() > 0 ? static_cast<std::size_t>(actor_.in_size()) * max_batch
                                         : 0),
+      critic_trunk_input_(model_->critic_recurrent() ? trunk_input_.size() : 0),
       d_features_actor_(static_cast<std::size_t>(actor_.in_size()) * max_batch),
       d_features_critic_(d_features_actor_.size()),
       d_perception_(
@@ -180,14 +190,17 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
   TORCH_CHECK(perception_.in_size() == kNumRays, "the perception stack must read 180 values");
   TORCH_CHECK(kNavigationSize + scans_ * perception_.out_size() == features_dim_,
               "perception output does not match features_dim");
-  if (recurrent_size() > 0) {
-    torch::nn::GRUCell& cell = model_->recurrent();
-    gru_.emplace(
-        cell,
-        std::vector<torch::Tensor>{GradientOf(cell->weight_ih), GradientOf(cell->weight_hh),
-                                   GradientOf(cell->bias_ih), GradientOf(cell->bias_hh)},
-        max_batch);
-    initial_states_columns_.resize(static_cast<std::size_t>(recurrent_size()) * max_batch);
+  const auto bind_gru = [&](std::optional<FastGru>& gru, torch::nn::GRUCell& cell) {
+    if (!cell) return;
+    gru.emplace(cell,
+                std::vector<torch::Tensor>{GradientOf(cell->weight_ih), GradientOf(cell->weight_hh),
+                                           GradientOf(cell->bias_ih), GradientOf(cell->bias_hh)},
+                max_batch);
+  };
+  bind_gru(gru_, model_->recurrent());
+  bind_gru(critic_gru_, model_->critic_recurrent());
+  if (gru_) {
+    initial_states_columns_.resize(static_cast<std::size_t>(state_size()) * max_batch);
     state_rows_.resize(max_batch);
     d_gru_input_.resize(features_.size());
   }
@@ -226,7 +239,7 @@ void FastActorCritic::Predict(const float* observations, int B, float* mean, flo
               "a recurrent model predicts from states, a memoryless one without");
   for (int b = 0; b < B; ++b) {
     rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * observation_size_;
-    if (gru_) state_rows_[b] = states + static_cast<std::ptrdiff_t>(b) * recurrent_size();
+    if (gru_) state_rows_[b] = states + static_cast<std::ptrdiff_t>(b) * state_size();
   }
   if (gru_) SetSequences(state_rows_.data(), nullptr, B);  // B sequences of one step
   ForwardObservations(rows_.data(), B);
@@ -234,9 +247,12 @@ void FastActorCritic::Predict(const float* observations, int B, float* mean, flo
     for (int j = 0; j < kActionSize; ++j) mean[b * kActionSize + j] = mean_[j * B + b];
     value[b] = value_[b];
   }
-  if (gru_) {
-    const float* next = trunk_input_.data() + static_cast<std::ptrdiff_t>(features_dim_) * B;
-    kernels::Transpose(next, recurrent_size(), B, states);
+  const std::ptrdiff_t features = static_cast<std::ptrdiff_t>(features_dim_) * B;
+  if (gru_)
+    ScatterStates(trunk_input_.data() + features, recurrent_size(), B, state_size(), states);
+  if (critic_gru_) {
+    ScatterStates(critic_trunk_input_.data() + features, recurrent_size(), B, state_size(),
+                  states + recurrent_size());
   }
 }
 
@@ -289,46 +305,58 @@ void FastActorCritic::ForwardFromFeatures(int B) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
   if (gru_) ForwardRecurrent(B);
   mean_ = actor_.Forward(TrunkInput(), B);
-  value_ = critic_.Forward(TrunkInput(), B);
+  value_ = critic_.Forward(CriticTrunkInput(), B);
 }
 
-// trunk_input_ = [features_; the GRU's state after each sample] over the sequences of
-// SetSequences.
+// The GRUs' states over the sequences of SetSequences, beside the features in the trunks' inputs.
 void FastActorCritic::ForwardRecurrent(int B) {
   const int S = sequences_;
   TORCH_CHECK(S > 0 && B % S == 0, "the batch is not whole sequences (SetSequences)");
-  const int H = recurrent_size();
+  const int state = state_size();
   for (int s = 0; s < S; ++s) {
-    for (int j = 0; j < H; ++j) initial_states_columns_[j * S + s] = initial_states_[s][j];
+    for (int j = 0; j < state; ++j) initial_states_columns_[j * S + s] = initial_states_[s][j];
   }
-  const float* states =
-      gru_->ForwardSequences(features_.data(), initial_states_columns_.data(), reset_, B / S, S);
-  const std::size_t features = static_cast<std::size_t>(features_dim_) * B;
-  std::copy_n(features_.data(), features, trunk_input_.data());
-  std::copy_n(states, static_cast<std::size_t>(H) * B, trunk_input_.data() + features);
+  ForwardMemory(*gru_, initial_states_columns_.data(), B, trunk_input_.data());
+  if (critic_gru_) {
+    ForwardMemory(*critic_gru_, initial_states_columns_.data() + recurrent_size() * S, B,
+                  critic_trunk_input_.data());
+  }
 }
 
-// d_trunk [features_dim + H, B]: the state rows go back through the GRU, whose input gradient
-// joins the feature rows.
-void FastActorCritic::BackwardRecurrent(float* d_trunk, int B) {
+// trunk_input = [features_; the state `gru` reaches after each sample from `initial`].
+void FastActorCritic::ForwardMemory(FastGru& gru, const float* initial, int B, float* trunk_input) {
+  const int S = sequences_;
+  const float* states = gru.ForwardSequences(features_.data(), initial, reset_, B / S, S);
+  const std::size_t features = static_cast<std::size_t>(features_dim_) * B;
+  std::copy_n(features_.data(), features, trunk_input);
+  std::copy_n(states, static_cast<std::size_t>(recurrent_size()) * B, trunk_input + features);
+}
+
+// d_trunk [features_dim + H, B]: its state rows go back through `gru`, whose input gradient joins
+// the feature rows of d_features.
+void FastActorCritic::BackwardMemory(FastGru& gru, float* d_trunk, float* d_features, int B) {
   float* d_states = d_trunk + static_cast<std::ptrdiff_t>(features_dim_) * B;
-  gru_->BackwardSequences(features_.data(), d_states, d_gru_input_.data());
+  gru.BackwardSequences(features_.data(), d_states, d_gru_input_.data());
   const int n = features_dim_ * B;
-  for (int i = 0; i < n; ++i) d_trunk[i] += d_gru_input_[i];
+  for (int i = 0; i < n; ++i) d_features[i] += d_gru_input_[i];
 }
 
 void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log_std, int B) {
   const bool input_gradient = extractor_trainable_ || gru_.has_value();
   actor_.Backward(TrunkInput(), d_mean, B, input_gradient ? d_features_actor_.data() : nullptr);
-  critic_.Backward(TrunkInput(), d_value, B, input_gradient ? d_features_critic_.data() : nullptr);
+  critic_.Backward(CriticTrunkInput(), d_value, B,
+                   input_gradient ? d_features_critic_.data() : nullptr);
   std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
   if (!input_gradient) return;
-  // Both heads read the same input: their gradients add up (the critic's state rows only when
-  // its loss trains the memory).
-  const int n =
-      (gru_ && !model_->options().value_trains_memory ? features_dim_ : actor_.in_size()) * B;
+  // Both heads read the features: their gradients add up; so do their state rows when both losses
+  // train one memory.
+  const bool critic_trains_actor_memory = model_->options().value_trains_memory && !critic_gru_;
+  const int n = (critic_trains_actor_memory ? actor_.in_size() : features_dim_) * B;
   for (int i = 0; i < n; ++i) d_features_actor_[i] += d_features_critic_[i];
-  if (gru_) BackwardRecurrent(d_features_actor_.data(), B);
+  if (gru_) BackwardMemory(*gru_, d_features_actor_.data(), d_features_actor_.data(), B);
+  if (critic_gru_) {
+    BackwardMemory(*critic_gru_, d_features_critic_.data(), d_features_actor_.data(), B);
+  }
   if (!extractor_trainable_) return;
   float* d_encodings = d_features_actor_.data() + kNavigationSize * B;  // the perception's rows
   // The scans share the stack's weights: one backward over all scans * B samples sums their

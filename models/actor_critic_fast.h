@@ -65,8 +65,8 @@ class FastActorCritic {
   FastActorCritic(ActorCritic model, int max_batch);
 
   /// observations [B, observation_size] (row-major) -> action mean [B, 2] and value [B]
-  /// (row-major). A recurrent model also takes `states` [B, recurrent_size] (row-major), the
-  /// states before these observations, and replaces them by the states after.
+  /// (row-major). A recurrent model also takes `states` [B, state_size] (row-major), the states
+  /// before these observations, and replaces them by the states after.
   void Predict(const float* observations, int B, float* mean, float* value,
                float* states = nullptr);
   /// Extractor output of `count` observations [count, observation_size] -> features
@@ -75,7 +75,7 @@ class FastActorCritic {
 
   /// For a recurrent model, before a training forward: its B samples are `sequences` sequences
   /// of B / sequences consecutive steps, in time-major order (sample t * sequences + s is step t of
-  /// sequence s); initial_states[s] points to the state (recurrent_size values) before step 0 of
+  /// sequence s); initial_states[s] points to the state (state_size values) before step 0 of
   /// sequence s; reset[t * sequences + s] != 0 where an episode starts (its state is 0 there).
   /// The pointers must stay valid until the backward.
   void SetSequences(const float* const* initial_states, const std::uint8_t* reset, int sequences);
@@ -106,14 +106,21 @@ class FastActorCritic {
   bool squash_actions() const { return model_->options().squash_actions; }
   /// The GRU state's size; 0 for a memoryless model.
   int recurrent_size() const { return static_cast<int>(model_->options().recurrent_size); }
+  /// Values of a step's state (ActorCriticOptions::state_size).
+  int state_size() const { return static_cast<int>(model_->options().state_size()); }
 
  private:
   void ForwardExtractor(const float* const* rows, int B);
   void ForwardFromFeatures(int B);
-  /// The trunks' input of the last forward: features_, or [features; GRU states] when recurrent.
+  /// The actor's input of the last forward: features_, or [features; GRU states] when recurrent.
   const float* TrunkInput() const { return gru_ ? trunk_input_.data() : features_.data(); }
+  /// The critic's: the actor's, or [features; its own GRU's states].
+  const float* CriticTrunkInput() const {
+    return critic_gru_ ? critic_trunk_input_.data() : TrunkInput();
+  }
   void ForwardRecurrent(int B);
-  void BackwardRecurrent(float* d_trunk, int B);
+  void ForwardMemory(FastGru& gru, const float* initial, int B, float* trunk_input);
+  void BackwardMemory(FastGru& gru, float* d_trunk, float* d_features, int B);
   torch::Tensor GradientOf(const torch::Tensor& parameter) const;
   FastLayer Bind(FastLayer::Kind kind, const torch::Tensor& weight, const torch::Tensor& bias,
                  FastLayer::Activation activation) const;
@@ -128,15 +135,17 @@ class FastActorCritic {
   std::vector<torch::Tensor> gradients_;
   torch::Tensor log_std_, log_std_grad_;
   FastLayerStack perception_, actor_, critic_;
-  std::vector<const float*> rows_;       // observation rows of Predict and Features
-  std::vector<float> perception_input_;  // [180, scans * B]
-  std::vector<float> features_;          // [features_dim, B]
-  std::vector<float> trunk_input_;       // [features_dim + recurrent_size, B], recurrent only
+  std::vector<const float*> rows_;         // observation rows of Predict and Features
+  std::vector<float> perception_input_;    // [180, scans * B]
+  std::vector<float> features_;            // [features_dim, B]
+  std::vector<float> trunk_input_;         // [features_dim + recurrent_size, B], recurrent only
+  std::vector<float> critic_trunk_input_;  // the same, separate critic memory only
   std::vector<float> d_features_actor_, d_features_critic_;  // [trunk input width, B]
   std::vector<float> d_perception_;                          // [P, scans * B], for scans > 1
   std::optional<FastGru> gru_;                               ///< recurrent models only
+  std::optional<FastGru> critic_gru_;                        ///< separate critic memory only
   // The sequences of the next training forward (SetSequences), and their initial states
-  // [recurrent_size, sequences].
+  // [state_size, sequences] (the critic's GRU's from row recurrent_size).
   const float* const* initial_states_ = nullptr;
   const std::uint8_t* reset_ = nullptr;
   int sequences_ = 0;

@@ -93,15 +93,21 @@ std::string MemorylessSource(ActorCriticImpl& model) {
          ValueReturnSource(model, "");
 }
 
-// torch.nn.GRUCell (gates r, z, n), written out so that the file needs no module of its own.
-std::string RecurrentCellSource(std::int64_t size) {
+// torch.nn.GRUCell (gates r, z, n) of the parameters `cell`_*, written out so that the file needs
+// no module of its own; the method is `cell`_cell.
+std::string RecurrentCellSource(std::int64_t size, const std::string& cell) {
   const std::string h = std::to_string(size);
-  return "def recurrent_cell(self, x: Tensor, state: Tensor) -> Tensor:\n"
+  return "def " + cell +
+         "_cell(self, x: Tensor, state: Tensor) -> Tensor:\n"
          "    assert state.dim() == 2 and state.size(0) == x.size(0) and state.size(1) == " +
          h + ", 'policy: states [B, " + h +
          "] expected, one row per observation (initial_state(B) at an episode start)'\n"
-         "    gi = torch.addmm(self.recurrent_bias_ih, x, self.recurrent_weight_ih.t())\n"
-         "    gh = torch.addmm(self.recurrent_bias_hh, state, self.recurrent_weight_hh.t())\n"
+         "    gi = torch.addmm(self." +
+         cell + "_bias_ih, x, self." + cell +
+         "_weight_ih.t())\n"
+         "    gh = torch.addmm(self." +
+         cell + "_bias_hh, state, self." + cell +
+         "_weight_hh.t())\n"
          "    i_r, i_z, i_n = gi.chunk(3, 1)\n"
          "    h_r, h_z, h_n = gh.chunk(3, 1)\n"
          "    r = torch.sigmoid(i_r + h_r)\n"
@@ -110,23 +116,30 @@ std::string RecurrentCellSource(std::int64_t size) {
          "    return (1 - z) * n + z * state\n";
 }
 
-// step and step_value: the GRU's next state `s`, then the trunks on [features, s].
+// step and step_value: the GRU's next state `s`, then the trunks on [features, s]; step_value
+// steps the critic's own GRU when it has one.
 std::string RecurrentSource(ActorCriticImpl& model) {
-  const std::string size = std::to_string(model.options().recurrent_size);
-  const std::string next_state =
-      "    x = self.features(obs)\n"
-      "    s = self.recurrent_cell(x, state)\n"
-      "    f = torch.cat([x, s], 1)\n";
-  return RecurrentCellSource(model.options().recurrent_size) +
+  const std::int64_t H = model.options().recurrent_size;
+  const std::string size = std::to_string(H);
+  const auto next_state = [](const std::string& cell) {
+    return "    x = self.features(obs)\n"
+           "    s = self." +
+           cell +
+           "_cell(x, state)\n"
+           "    f = torch.cat([x, s], 1)\n";
+  };
+  const std::string value_cell = model.critic_recurrent() ? "critic_recurrent" : "recurrent";
+  return RecurrentCellSource(H, "recurrent") +
+         (model.critic_recurrent() ? RecurrentCellSource(H, value_cell) : std::string()) +
          // The parameters' float32 (torch.float32 does not compile outside Python).
          "def initial_state(self, batch: int) -> Tensor:\n"
          "    return self.recurrent_bias_hh.new_zeros([batch, " +
          size +
          "])\n"
          "def step(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
-         next_state + ActionReturnSource(model, ", s") +
+         next_state("recurrent") + ActionReturnSource(model, ", s") +
          "def step_value(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
-         next_state + ValueReturnSource(model, ", s") +
+         next_state(value_cell) + ValueReturnSource(model, ", s") +
          // Acting from a zero state at every call would look like a policy and be a worse one.
          // (An assert: builtin exceptions such as RuntimeError only compile from Python.)
          "def forward(self, obs: Tensor) -> Tensor:\n"

@@ -23,6 +23,8 @@
 //   initial_state(batch: int) -> zeros float32 [batch, H], the state at an episode's start;
 //   step(obs, state [B, H]) -> Tuple[action [B, 2], next state [B, H]], the action as forward's;
 //   step_value(obs, state) -> Tuple[value [B, 1], next state [B, H]];  features(obs) as above.
+//   A critic with a memory of its own (ActorCriticOptions::separate_critic_memory) steps it in
+//   step_value, through critic_recurrent_cell: its state is kept apart from step's.
 //   Its forward(obs) fails with "AssertionError: recurrent policy: call step(obs, state) starting
 //   from initial_state(B)" (acting from a zero state at every step would be a different, worse
 //   policy) and it has no value(obs). The GRU cell is recurrent_cell(x, state).

@@ -136,24 +136,35 @@ INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticPredictTest,
                                            std::tuple{ExtractorKind::kBaseline, 3},
                                            std::tuple{ExtractorKind::kVaeDeep, 3}));
 
+// Which losses train which memory.
+enum class MemoryTraining {
+  kBothLosses,  ///< one GRU, trained by the actor's and the critic's loss
+  kActorLoss,   ///< one GRU, trained by the actor's loss only (value_trains_memory false)
+  kSeparate,    ///< a GRU each (separate_critic_memory)
+};
+
 // A recurrent model on 3 sequences of 4 steps (time-major samples), an episode starting at step 2
-// of sequence 1: the fast passes against autograd through forward_recurrent step by step, with
-// the critic's loss training the memory or not (value_trains_memory).
-class FastRecurrentTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, bool>> {};
+// of sequence 1: the fast passes against autograd through forward_recurrent step by step, for
+// each way of training the memory.
+class FastRecurrentTest
+    : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, MemoryTraining>> {};
 
 TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
-  const auto [kind, locked, value_trains_memory] = GetParam();
-  constexpr int kSequences = 3, kSteps = 4, kState = 5, B = kSequences * kSteps;
+  const auto [kind, locked, memory_training] = GetParam();
+  constexpr int kSequences = 3, kSteps = 4, kMemory = 5, B = kSequences * kSteps;
   testing_util::TemporaryFolder directory;
   ActorCriticOptions options = Options(kind, directory.path(), locked);
-  options.recurrent_size = kState;
-  options.value_trains_memory = value_trains_memory;
+  options.recurrent_size = kMemory;
+  options.value_trains_memory = memory_training != MemoryTraining::kActorLoss;
+  options.separate_critic_memory = memory_training == MemoryTraining::kSeparate;
   ActorCritic model(options);
   FastActorCritic fast(model, kBatch);
-  ASSERT_EQ(fast.recurrent_size(), kState);
+  ASSERT_EQ(fast.recurrent_size(), kMemory);
+  const int state_size = memory_training == MemoryTraining::kSeparate ? 2 * kMemory : kMemory;
+  ASSERT_EQ(fast.state_size(), state_size);
 
   const torch::Tensor obs = Observations(B, model);
-  const torch::Tensor initial = torch::randn({kSequences, kState});
+  const torch::Tensor initial = torch::randn({kSequences, state_size});
   std::vector<std::uint8_t> reset(B, 0);
   reset[2 * kSequences + 1] = 1;
   const torch::Tensor grad_mean = torch::randn({B, kActionSize});
@@ -213,11 +224,18 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   ExpectClose(states.data_ptr<float>(), step_state, 1e-5, "next states");
 }
 
-INSTANTIATE_TEST_SUITE_P(Extractors, FastRecurrentTest,
-                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false, true},
-                                           std::tuple{ExtractorKind::kVaeShallow, true, true},
-                                           std::tuple{ExtractorKind::kBaseline, false, false},
-                                           std::tuple{ExtractorKind::kVaeShallow, true, false}));
+INSTANTIATE_TEST_SUITE_P(TrainableBaseline, FastRecurrentTest,
+                         ::testing::Combine(::testing::Values(ExtractorKind::kBaseline),
+                                            ::testing::Values(false),
+                                            ::testing::Values(MemoryTraining::kBothLosses,
+                                                              MemoryTraining::kActorLoss,
+                                                              MemoryTraining::kSeparate)));
+INSTANTIATE_TEST_SUITE_P(LockedEncoder, FastRecurrentTest,
+                         ::testing::Combine(::testing::Values(ExtractorKind::kVaeShallow),
+                                            ::testing::Values(true),
+                                            ::testing::Values(MemoryTraining::kBothLosses,
+                                                              MemoryTraining::kActorLoss,
+                                                              MemoryTraining::kSeparate)));
 
 TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   std::vector<float> x;

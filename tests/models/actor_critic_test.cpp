@@ -164,5 +164,46 @@ TEST(ActorCriticTest, ValueTrainsMemoryDecidesWhetherTheCriticLossReachesTheGru)
   EXPECT_TRUE(torch::equal(std::get<2>(outputs), std::get<2>(detached_outputs)));
 }
 
+// A critic with a memory of its own: the actor computes what it computes with the shared memory
+// (the critic's GRU is drawn last), each loss reaches its own GRU only, and the state is
+// [actor's, critic's].
+TEST(ActorCriticTest, SeparateCriticMemoryKeepsEachLossOnItsOwnGru) {
+  constexpr std::int64_t kMemory = 4;
+  ActorCriticOptions options;
+  options.recurrent_size = kMemory;
+  torch::manual_seed(3);
+  const torch::Tensor observations = torch::rand({3, kObservationSize});
+  const torch::Tensor states = torch::randn({3, 2 * kMemory});
+  const torch::Tensor actor_states = states.narrow(1, 0, kMemory);
+  ActorCritic shared(options);
+  options.separate_critic_memory = true;
+  ActorCritic separate(options);
+  ASSERT_EQ(options.state_size(), 2 * kMemory);
+
+  const auto [shared_mean, shared_value, shared_next] =
+      shared->forward_recurrent(observations, actor_states);
+  const auto [mean, value, next] = separate->forward_recurrent(observations, states);
+  ASSERT_EQ(next.size(1), 2 * kMemory);
+  EXPECT_TRUE(torch::allclose(mean, shared_mean));
+  EXPECT_TRUE(torch::allclose(next.narrow(1, 0, kMemory), shared_next));
+  const torch::Tensor features = separate->features_extractor()->forward(observations);
+  const torch::Tensor critic_next =
+      separate->critic_recurrent()->forward(features, states.narrow(1, kMemory, kMemory));
+  EXPECT_TRUE(torch::allclose(next.narrow(1, kMemory, kMemory), critic_next));
+  EXPECT_FALSE(torch::allclose(value, shared_value));  // the critic reads its own state
+
+  const auto gradient_sum = [](const torch::nn::GRUCell& cell) {
+    const torch::Tensor gradient = cell->weight_ih.grad();  // undefined: none
+    return gradient.defined() ? gradient.abs().sum().item<float>() : 0.0f;
+  };
+  value.sum().backward({}, /*retain_graph=*/true);
+  EXPECT_EQ(gradient_sum(separate->recurrent()), 0.0f);
+  EXPECT_GT(gradient_sum(separate->critic_recurrent()), 0.0f);
+  separate->zero_grad();
+  mean.sum().backward();
+  EXPECT_GT(gradient_sum(separate->recurrent()), 0.0f);
+  EXPECT_EQ(gradient_sum(separate->critic_recurrent()), 0.0f);
+}
+
 }  // namespace
 }  // namespace colav

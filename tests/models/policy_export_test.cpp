@@ -108,6 +108,43 @@ TEST(PolicyExportTest, ARecurrentPolicyStepsLikeTheInProcessModel) {
               testing::HasSubstr("states [B, 4] expected"));
 }
 
+// With a memory of its own, the critic's state travels apart: step keeps the actor's half of
+// forward_recurrent's state, step_value the critic's, each from its own initial_state.
+TEST(PolicyExportTest, ASeparateCriticMemoryStepsInStepValue) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  options.separate_critic_memory = true;
+  options.hidden_sizes = {16, 8};
+  ActorCritic model(options);
+  torch::NoGradGuard no_grad;
+  model->critic_recurrent()->bias_ih.normal_(0.0, 0.5);  // the two cells must not agree
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 1234, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  EXPECT_EQ(loaded.attr("recurrent_size").toInt(), 4);
+  const std::int64_t batch = 3;
+  torch::Tensor actor_state = loaded.get_method("initial_state")({batch}).toTensor();
+  torch::Tensor critic_state = actor_state.clone();
+  torch::Tensor expected_state = torch::zeros({batch, 8});
+  for (int k = 0; k < 3; ++k) {
+    const torch::Tensor obs = torch::rand({batch, kObservationSize});
+    const auto [mean, value, next_state] = model->forward_recurrent(obs, expected_state);
+    const auto stepped = loaded.get_method("step")({obs, actor_state}).toTuple()->elements();
+    const auto valued = loaded.get_method("step_value")({obs, critic_state}).toTuple()->elements();
+    EXPECT_TRUE(torch::allclose(stepped[0].toTensor(), mean.clamp(-1.0, 1.0), 1e-5, 1e-6))
+        << "step " << k;
+    EXPECT_TRUE(torch::allclose(stepped[1].toTensor(), next_state.narrow(1, 0, 4), 1e-5, 1e-6))
+        << "step " << k;
+    EXPECT_TRUE(torch::allclose(valued[0].toTensor(), value, 1e-5, 1e-5)) << "step " << k;
+    EXPECT_TRUE(torch::allclose(valued[1].toTensor(), next_state.narrow(1, 4, 4), 1e-5, 1e-6))
+        << "step " << k;
+    actor_state = stepped[1].toTensor();
+    critic_state = valued[1].toTensor();
+    expected_state = next_state;
+  }
+}
+
 // Makes `options` a VAE extractor of `architecture` with an untrained encoder saved in `folder`.
 void UseSavedEncoder(ActorCriticOptions& options, VaeArchitecture architecture,
                      const std::filesystem::path& folder) {

@@ -125,11 +125,21 @@ void RequireWholeSequences(PpoRunOptions& options) {
   }
 }
 
-// A setting of the memory's training without a memory.
+// A setting of the memory's training without a memory, or two that contradict each other.
 void RequireMemoryForItsTraining(PpoRunOptions& options) {
-  if (options.model.recurrent_size == 0 && !options.model.value_trains_memory) {
+  const ActorCriticOptions& model = options.model;
+  if (model.recurrent_size == 0 && !model.value_trains_memory) {
     throw UserError(
         "policy.value_trains_memory = false needs a memory (policy.recurrent_size > 0)");
+  }
+  if (model.recurrent_size == 0 && model.separate_critic_memory) {
+    throw UserError(
+        "policy.separate_critic_memory = true needs a memory (policy.recurrent_size > 0)");
+  }
+  if (model.separate_critic_memory && !model.value_trains_memory) {
+    throw UserError(
+        "policy.separate_critic_memory = true trains the critic's own memory on its loss: leave "
+        "policy.value_trains_memory true");
   }
 }
 
@@ -254,6 +264,11 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           [](Run & o) -> auto& { return o.model.value_trains_memory; },
           "whether the critic's loss trains the memory as the actor's does; false: the critic "
           "reads the state detached (SB3-contrib's shared LSTM)")
+      .Bool(
+          "policy.separate_critic_memory",
+          [](Run & o) -> auto& { return o.model.separate_critic_memory; },
+          "give the critic a memory of its own (SB3-contrib's default) instead of the actor's; "
+          "each is trained by its own loss")
       .Bool(
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
           "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "

@@ -91,9 +91,11 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   }
   const float* epsilon = noise.data_ptr<float>();
   const bool squash = policy.squash_actions();
-  const int H = policy.recurrent_size();
-  if (states_.size() != static_cast<std::size_t>(N) * H) states_.assign(N * H, 0.0f);
-  float* states = H > 0 ? states_.data() : nullptr;
+  const int state_size = policy.state_size();
+  if (states_.size() != static_cast<std::size_t>(N) * state_size) {
+    states_.assign(N * state_size, 0.0f);
+  }
+  float* states = state_size > 0 ? states_.data() : nullptr;
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
     std::copy_n(SeenObservations(), N * env_->observation_size(), observations);
@@ -136,13 +138,13 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     }
     ValueFinalObservations(policy, t, buffer);
     for (int e = 0; e < N; ++e) {
-      if (buffer.dones(t)[e] != 0) std::fill_n(states_.begin() + e * H, H, 0.0f);
+      if (buffer.dones(t)[e] != 0) std::fill_n(states_.begin() + e * state_size, state_size, 0.0f);
     }
     if (!after_step(finished_)) return false;
   }
   scratch_states_ = states_;  // the next rollout starts from states_ again
   policy.Predict(SeenObservations(), N, mean_.data(), buffer.last_values(),
-                 H > 0 ? scratch_states_.data() : nullptr);
+                 state_size > 0 ? scratch_states_.data() : nullptr);
   return true;
 }
 
@@ -160,10 +162,11 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
       navigation_normalizer_.Normalize(final_observation_.data(), 1, env_->observation_size());
     }
     // From the state the episode's last step left (a copy: the world starts afresh).
-    const int H = policy.recurrent_size();
-    scratch_states_.assign(states_.begin() + e * H, states_.begin() + (e + 1) * H);
+    const int state_size = policy.state_size();
+    scratch_states_.assign(states_.begin() + e * state_size,
+                           states_.begin() + (e + 1) * state_size);
     policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data(),
-                   H > 0 ? scratch_states_.data() : nullptr);
+                   state_size > 0 ? scratch_states_.data() : nullptr);
     buffer.final_values(t)[e] = scratch_values_[0];
   }
 }

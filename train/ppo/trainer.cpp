@@ -79,7 +79,7 @@ class PpoTrainer {
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env),
-                static_cast<int>(options.model.recurrent_size)) {
+                static_cast<int>(options.model.state_size())) {
     updater_.set_n_updates(counters_.n_updates);
     if (resume) ContinueFromRolloutStart();
   }
@@ -182,7 +182,7 @@ class PpoTrainer {
       collector_.RestoreNavigationMoments(rollout_start_.navigation_moments);
       const std::size_t states = rollout_start_.policy_states.size();
       if (states != 0 && states != static_cast<std::size_t>(options_.n_envs) *
-                                       updater_.policy().recurrent_size()) {
+                                       updater_.policy().state_size()) {
         throw std::invalid_argument(std::to_string(states) + " policy state values");
       }
       collector_.RestorePolicyStates(rollout_start_.policy_states);

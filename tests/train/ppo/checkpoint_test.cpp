@@ -228,24 +228,40 @@ TEST(PpoCheckpointTest, ExtendedRecurrentRunEqualsTheUninterruptedRun) {
   EXPECT_NE(ReadFile(runs.whole / "episodes.csv"), ReadFile(runs.plain / "episodes.csv"));
 }
 
-// policy.value_trains_memory reaches the trained model: the same run with the critic's loss kept
-// out of the GRU learns other weights.
-TEST(PpoCheckpointTest, ValueTrainsMemoryReachesTheTrainedMemory) {
+// The memory's training settings reach the trained model: with the critic's loss kept out of the
+// GRU, or given a GRU of its own, the actor's GRU learns other weights.
+TEST(PpoCheckpointTest, MemoryTrainingSettingsReachTheTrainedMemory) {
   testing_util::TemporaryFolder directory;
-  const auto recurrent_run = [&](const std::string& name, const std::string& value_trains_memory) {
+  const auto recurrent_run = [&](const std::string& name, const std::string& key) {
     Config config = ShortEpisodes(160);
     config.Set("policy.recurrent_size", "4", "test");
     config.Set("ppo.sequence_length", "4", "test");
-    config.Set("policy.value_trains_memory", value_trains_memory, "test");
+    if (key == "policy.value_trains_memory") config.Set(key, "false", "test");
+    if (key == "policy.separate_critic_memory") config.Set(key, "true", "test");
     std::filesystem::create_directories(directory.path() / name);
     Train(config, directory.path() / name, /*resume=*/false);
     return torch::jit::load((directory.path() / name / "policy.pt").string());
   };
-  const torch::Tensor shared =
-      recurrent_run("shared", "true").attr("recurrent_weight_ih").toTensor();
-  const torch::Tensor detached =
-      recurrent_run("detached", "false").attr("recurrent_weight_ih").toTensor();
+  const torch::Tensor shared = recurrent_run("shared", "").attr("recurrent_weight_ih").toTensor();
+  const torch::Tensor detached = recurrent_run("detached", "policy.value_trains_memory")
+                                     .attr("recurrent_weight_ih")
+                                     .toTensor();
+  const torch::jit::Module separate = recurrent_run("separate", "policy.separate_critic_memory");
+  const torch::Tensor separate_actor = separate.attr("recurrent_weight_ih").toTensor();
   EXPECT_FALSE(torch::equal(shared, detached));
+  EXPECT_FALSE(torch::equal(shared, separate_actor));
+  EXPECT_FALSE(torch::equal(detached, separate_actor));
+  EXPECT_FALSE(
+      torch::equal(separate.attr("critic_recurrent_weight_ih").toTensor(), separate_actor));
+}
+
+// Both memories' states, [n_envs, 2 * recurrent_size], run across the rollouts and the resume.
+TEST(PpoCheckpointTest, ExtendedRunWithASeparateCriticMemoryEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  TrainWithOptions({{"policy.recurrent_size", "4"},
+                    {"ppo.sequence_length", "4"},
+                    {"policy.separate_critic_memory", "true"}},
+                   directory.path());
 }
 
 // The reward scaler's returns run across the rollouts and episodes.
