@@ -1,7 +1,8 @@
 // bench_ppo: times the PPO learner without the simulator, on synthetic rollouts: one update of a
 // full rollout (n_steps x n_envs samples, n_epochs passes of minibatches) and the batched policy
 // forward of a rollout step, for each of the paper's five configurations and the shallow locked
-// one with a memory (policy.recurrent_size 32, sequences of ppo.sequence_length). Times are the
+// one with a memory (policy.recurrent_size 32, sequences of ppo.sequence_length), shared or one
+// each for actor and critic (policy.separate_critic_memory). Times are the
 // thread's CPU time (steady under load from other processes; on an idle machine they equal wall
 // time). Ends with headline lines `update_us_per_minibatch_<config>: N`,
 // `policy_us_per_step_<config>: N` and `learner_s_per_3m_steps_<config>: N` (the learner's share of
@@ -34,6 +35,7 @@ struct Configuration {
   colav::ExtractorKind kind;
   bool locked;
   int recurrent_size = 0;
+  bool separate_critic_memory = false;
 };
 
 // Random observations and actions, rewards of -1, 0 or 1, episodes of 300 steps; with a memory,
@@ -75,6 +77,7 @@ int Main(int argc, char** argv) {
   constexpr int kRecurrentSize = 32;
   const colav::RolloutBuffer memoryless_rollout = SyntheticRollout(options, 0);
   const colav::RolloutBuffer recurrent_rollout = SyntheticRollout(options, kRecurrentSize);
+  const colav::RolloutBuffer two_memories_rollout = SyntheticRollout(options, 2 * kRecurrentSize);
   const double minibatches_per_update =
       options.n_epochs * static_cast<double>(memoryless_rollout.size()) / options.batch_size;
   const std::vector<Configuration> configurations = {
@@ -83,15 +86,20 @@ int Main(int argc, char** argv) {
       {"shallow_unlocked", colav::ExtractorKind::kVaeShallow, false},
       {"deep_locked", colav::ExtractorKind::kVaeDeep, true},
       {"deep_unlocked", colav::ExtractorKind::kVaeDeep, false},
-      {"shallow_locked_recurrent32", colav::ExtractorKind::kVaeShallow, true, kRecurrentSize}};
+      {"shallow_locked_recurrent32", colav::ExtractorKind::kVaeShallow, true, kRecurrentSize},
+      {"shallow_locked_recurrent32_critic_memory", colav::ExtractorKind::kVaeShallow, true,
+       kRecurrentSize, true}};
   std::vector<std::string> headlines;
   for (const Configuration& configuration : configurations) {
     colav::ActorCriticOptions model_options;
     model_options.extractor.kind = configuration.kind;  // untrained encoder: same cost
     model_options.extractor.locked = configuration.locked;
     model_options.recurrent_size = configuration.recurrent_size;
+    model_options.separate_critic_memory = configuration.separate_critic_memory;
     const colav::RolloutBuffer& buffer =
-        configuration.recurrent_size > 0 ? recurrent_rollout : memoryless_rollout;
+        configuration.separate_critic_memory
+            ? two_memories_rollout
+            : (configuration.recurrent_size > 0 ? recurrent_rollout : memoryless_rollout);
     colav::PpoUpdater updater(colav::ActorCritic(model_options), options);
     auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
     updater.Update(buffer, generator);  // warm-up
@@ -102,7 +110,7 @@ int Main(int argc, char** argv) {
 
     std::vector<float> mean(options.n_envs * colav::kActionSize), value(options.n_envs);
     std::vector<float> states(static_cast<std::size_t>(options.n_envs) *
-                              configuration.recurrent_size);
+                              model_options.state_size());
     float* step_states = configuration.recurrent_size > 0 ? states.data() : nullptr;
     start = ThreadCpuSeconds();
     for (int t = 0; t < options.n_steps; ++t) {
