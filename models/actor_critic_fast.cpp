@@ -54,8 +54,9 @@ void GatherRows(const float* const* rows, int count, int offset, int width, int 
 // [B, stride] array `rows`.
 void ScatterStates(const float* states, int H, int B, int stride, float* rows) {
   for (int b = 0; b < B; ++b) {
-    for (int j = 0; j < H; ++j)
+    for (int j = 0; j < H; ++j) {
       rows[static_cast<std::ptrdiff_t>(b) * stride + j] = states[j * B + b];
+    }
   }
 }
 
@@ -248,8 +249,9 @@ void FastActorCritic::Predict(const float* observations, int B, float* mean, flo
     value[b] = value_[b];
   }
   const std::ptrdiff_t features = static_cast<std::ptrdiff_t>(features_dim_) * B;
-  if (gru_)
+  if (gru_) {
     ScatterStates(trunk_input_.data() + features, recurrent_size(), B, state_size(), states);
+  }
   if (critic_gru_) {
     ScatterStates(critic_trunk_input_.data() + features, recurrent_size(), B, state_size(),
                   states + recurrent_size());
