@@ -4,9 +4,11 @@ memoryless and recurrent members side by side, run by evaluate, and one-line ref
 import subprocess
 from typing import Tuple
 
+import numpy as np
 import torch
 from torch import Tensor
 
+import colav
 from conftest import BIN_DIR, SOURCE_DIR
 
 SCRIPT = SOURCE_DIR / "scripts" / "ensemble_policy.py"
@@ -96,9 +98,13 @@ def test_recurrent_members_step_their_own_slices_of_the_state(tmp_path):
         assert torch.equal(state, torch.cat([small_state, large_state], 1))
 
 
-def test_evaluate_runs_a_recurrent_ensemble(tmp_path):
+def test_evaluate_and_colav_run_a_recurrent_ensemble(tmp_path):
     members = [save(Memoryless(1), tmp_path / "plain.pt"), save(Recurrent(2, 2), tmp_path / "r.pt")]
     assert ensemble("--out", tmp_path / "ensemble.pt", *members).returncode == 0
+    policy = colav.Policy(tmp_path / "ensemble.pt")
+    assert policy.recurrent_size == 2 and policy.observation_settings == {"closeness": "log"}
+    actions = policy.act(np.random.default_rng(0).random((3, OBSERVATION_SIZE)), np.ones(3, bool))
+    assert actions.shape == (3, 2) and np.all(np.abs(actions) <= 1.0)
     result = subprocess.run([str(BIN_DIR / "evaluate"), "--policy", str(tmp_path / "ensemble.pt"),
                              "--episodes", "2", "--trajectories", "0", "--threads", "1",
                              "--out", str(tmp_path / "eval")], capture_output=True, text=True)
