@@ -118,8 +118,9 @@ def build(paths):
             fail(f"{path}: observation settings differ from those of {paths[0]}")
         settings = member_settings
         members.append(module)
-    recurrent = [m for m in members if int(getattr(m, "recurrent_size", 0)) > 0]
-    memoryless = [m for m in members if int(getattr(m, "recurrent_size", 0)) == 0]
+    memoryless, recurrent = [], []
+    for member in members:
+        (recurrent if int(getattr(member, "recurrent_size", 0)) > 0 else memoryless).append(member)
     listing = "\n".join(os.path.abspath(path) for path in paths)
     if recurrent:
         return torch.jit.script(RecurrentEnsemble(memoryless, recurrent, settings, listing))

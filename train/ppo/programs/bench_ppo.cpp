@@ -75,11 +75,8 @@ int Main(int argc, char** argv) {
 
   const colav::PpoOptions options;
   constexpr int kRecurrentSize = 32;
-  const colav::RolloutBuffer memoryless_rollout = SyntheticRollout(options, 0);
-  const colav::RolloutBuffer recurrent_rollout = SyntheticRollout(options, kRecurrentSize);
-  const colav::RolloutBuffer two_memories_rollout = SyntheticRollout(options, 2 * kRecurrentSize);
-  const double minibatches_per_update =
-      options.n_epochs * static_cast<double>(memoryless_rollout.size()) / options.batch_size;
+  const double rollout_samples = static_cast<double>(options.n_steps) * options.n_envs;
+  const double minibatches_per_update = options.n_epochs * rollout_samples / options.batch_size;
   const std::vector<Configuration> configurations = {
       {"baseline", colav::ExtractorKind::kBaseline, false},
       {"shallow_locked", colav::ExtractorKind::kVaeShallow, true},
@@ -96,10 +93,9 @@ int Main(int argc, char** argv) {
     model_options.extractor.locked = configuration.locked;
     model_options.recurrent_size = configuration.recurrent_size;
     model_options.separate_critic_memory = configuration.separate_critic_memory;
-    const colav::RolloutBuffer& buffer =
-        configuration.separate_critic_memory
-            ? two_memories_rollout
-            : (configuration.recurrent_size > 0 ? recurrent_rollout : memoryless_rollout);
+    // The same synthetic rollout for every configuration, with states of the model's size.
+    const colav::RolloutBuffer buffer =
+        SyntheticRollout(options, static_cast<int>(model_options.state_size()));
     colav::PpoUpdater updater(colav::ActorCritic(model_options), options);
     auto generator = at::make_generator<at::CPUGeneratorImpl>(0);
     updater.Update(buffer, generator);  // warm-up
@@ -121,7 +117,7 @@ int Main(int argc, char** argv) {
     }
     const double predict_s = (ThreadCpuSeconds() - start) / options.n_steps;
 
-    const double rollouts_per_run = kRunSteps / buffer.size();
+    const double rollouts_per_run = kRunSteps / rollout_samples;
     const double learner_s = rollouts_per_run * (update_s + options.n_steps * predict_s);
     std::cout << configuration.name << ": update " << update_s << " s per rollout ("
               << 1e6 * update_s / minibatches_per_update << " us per minibatch of "
