@@ -48,6 +48,8 @@ class Policy {
 
   const std::string& name() const { return name_; }
   const std::filesystem::path& path() const { return path_; }
+  /// The loaded TorchScript module (eval/policy_ensemble.h makes it a submodule).
+  const torch::jit::Module& module() const { return module_; }
   /// The observation settings the policy was trained with, when its file or sidecar says.
   const std::optional<ObservationSettings>& own_settings() const { return own_settings_; }
   /// Where own_settings() come from: "recorded in the file", "sidecar <file>", or "unknown".

@@ -14,6 +14,19 @@ constexpr double kEvaluationEpisodesPerSecond = 200.0;
 constexpr double kDatasetSeconds = 2.0;
 constexpr double kFigureSeconds = 2.0;
 constexpr double kVaeFiguresSeconds = 150.0;
+constexpr double kEnsembleSeconds = 2.0;
+
+// The policy file of training seed `seed` of `config`.
+std::filesystem::path RunPolicy(const std::filesystem::path& out, const std::string& config,
+                                int seed) {
+  return out / "ppo" / config / ("seed_" + std::to_string(seed)) / "policy.pt";
+}
+
+// The policy file of ensemble `k` of the kind `ensemble`.
+std::filesystem::path EnsemblePolicyFile(const std::filesystem::path& out,
+                                         const std::string& ensemble, int k) {
+  return out / "ensembles" / ensemble / ("seed_" + std::to_string(k)) / "policy.pt";
+}
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
   for (const std::string& assignment : overrides) {
@@ -30,8 +43,13 @@ EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::p
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     for (int k = 0; k < spec.ppo_seeds; ++k) {
       group.models.push_back(SeedModelName(config.name, k));
-      group.policies.push_back(out / "ppo" / config.name / ("seed_" + std::to_string(k)) /
-                               "policy.pt");
+      group.policies.push_back(RunPolicy(out, config.name, k));
+    }
+  }
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    for (int k = 0; k < ensemble.count; ++k) {
+      group.models.push_back(SeedModelName(ensemble.name, k));
+      group.policies.push_back(EnsemblePolicyFile(out, ensemble.name, k));
     }
   }
   for (const std::filesystem::path& agent : spec.evaluation.reference_agents) {
@@ -71,11 +89,34 @@ void AddTrainingFigureJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
                png, kFigureSeconds);
     job.check_configuration = false;  // every argument comes from the study, none from the user
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const std::filesystem::path dir = out / "ppo" / config.name / ("seed_" + std::to_string(k));
-      job.args.insert(job.args.end(), {"--run", "seed_" + std::to_string(k) + "=" + dir.string()});
-      job.dependencies.push_back(policy_jobs.at((dir / "policy.pt").string()));
+      const std::filesystem::path policy = RunPolicy(out, config.name, k);
+      job.args.insert(job.args.end(),
+                      {"--run", "seed_" + std::to_string(k) + "=" + policy.parent_path().string()});
+      job.dependencies.push_back(policy_jobs.at(policy.string()));
     }
     AddJob(jobs, job);
+  }
+}
+
+// One ensemble_policy job per ensemble, after the runs it averages (study_spec.h, EnsembleSpec).
+void AddEnsembleJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
+                     const std::filesystem::path& out,
+                     std::map<std::string, std::size_t>& policy_jobs) {
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    for (int k = 0; k < ensemble.count; ++k) {
+      const std::filesystem::path policy = EnsemblePolicyFile(out, ensemble.name, k);
+      StudyJob job =
+          NewJob("ensembles/" + ensemble.name + "/seed_" + std::to_string(k), "ensemble_policy",
+                 {"--out", policy.string()}, policy, kEnsembleSeconds);
+      job.check_configuration = false;  // every argument comes from the study, none from the user
+      for (std::size_t i = 0; i < ensemble.members.size(); ++i) {
+        const std::filesystem::path member =
+            RunPolicy(out, ensemble.members[i], ensemble.MemberSeed(i, k));
+        job.args.push_back(member.string());
+        job.dependencies.push_back(policy_jobs.at(member.string()));
+      }
+      policy_jobs[policy.string()] = AddJob(jobs, job);
+    }
   }
 }
 
@@ -165,6 +206,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   }
 
   AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
+  AddEnsembleJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path dir = out / "eval" / group.scenario_set;
     StudyJob job = NewJob(

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include "eval/study/job_graph.h"
@@ -28,19 +29,23 @@ const ModelSummary& Summary(const ScenarioSetReport& report, const std::string& 
                        [&](const ModelSummary& m) { return m.name == name; });
 }
 
-// The mean of `metric` of each training seed of `config` (in the report's unit).
-std::vector<double> SeedMeans(const StudySpec& spec, const ScenarioSetResults& results,
-                              const std::string& config, const std::string& metric) {
-  std::vector<double> means;
-  for (int k = 0; k < spec.ppo_seeds; ++k) {
-    means.push_back(Mean(results.models.at(SeedModelName(config, k)).at(metric)));
+// The study's model of several seeds named `name` (study_spec.h), if there is one.
+std::optional<SeededModel> FindSeeded(const StudySpec& spec, const std::string& name) {
+  for (const SeededModel& model : spec.SeededModels()) {
+    if (model.name == name) return model;
   }
-  return means;
+  return std::nullopt;
 }
 
-bool IsConfig(const StudySpec& spec, const std::string& name) {
-  return std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                     [&](const PpoConfigSpec& c) { return c.name == name; });
+// The mean of `metric` of each seed of the configuration or ensemble kind `name` (in the
+// report's unit).
+std::vector<double> SeedMeans(const StudySpec& spec, const ScenarioSetResults& results,
+                              const std::string& name, const std::string& metric) {
+  std::vector<double> means;
+  for (int k = 0; k < FindSeeded(spec, name)->seeds; ++k) {
+    means.push_back(Mean(results.models.at(SeedModelName(name, k)).at(metric)));
+  }
+  return means;
 }
 
 std::string Estimates(const ScenarioSetReport& report, const std::vector<std::string>& names,
@@ -57,12 +62,13 @@ std::string DataBlock(const std::string& name, const std::string& rows) {
   return "$" + name + " << EOD\n" + (rows.empty() ? "nan nan nan nan\n" : rows) + "EOD\n";
 }
 
-// The report's models in its order, split into our configurations and the reference agents.
+// The report's models in its order, split into ours (configurations and ensemble kinds) and the
+// reference agents.
 std::pair<std::vector<std::string>, std::vector<std::string>> OursAndReferences(
     const StudySpec& spec, const ScenarioSetReport& report) {
   std::pair<std::vector<std::string>, std::vector<std::string>> split;
   for (const ModelSummary& model : report.models) {
-    (IsConfig(spec, model.name) ? split.first : split.second).push_back(model.name);
+    (FindSeeded(spec, model.name) ? split.first : split.second).push_back(model.name);
   }
   return split;
 }

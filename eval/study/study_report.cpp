@@ -71,17 +71,18 @@ SeedScores Scores(const std::vector<const ModelEpisodes*>& seeds, const StudyMet
   return scores;
 }
 
-// The models of the set as (name, seeds): configurations gather their seed models.
+// The models of the set as (name, seeds): configurations and ensemble kinds gather their seed
+// models.
 std::vector<std::pair<std::string, std::vector<const ModelEpisodes*>>> Groups(
     const StudySpec& spec, const ScenarioSetResults& results) {
   std::vector<std::pair<std::string, std::vector<const ModelEpisodes*>>> groups;
-  for (const PpoConfigSpec& config : spec.ppo_configs) {
+  for (const SeededModel& model : spec.SeededModels()) {
     std::vector<const ModelEpisodes*> seeds;
-    seeds.reserve(static_cast<std::size_t>(spec.ppo_seeds));
-    for (int k = 0; k < spec.ppo_seeds; ++k) {
-      seeds.push_back(&results.models.at(SeedModelName(config.name, k)));
+    seeds.reserve(static_cast<std::size_t>(model.seeds));
+    for (int k = 0; k < model.seeds; ++k) {
+      seeds.push_back(&results.models.at(SeedModelName(model.name, k)));
     }
-    groups.emplace_back(config.name, seeds);
+    groups.emplace_back(model.name, seeds);
   }
   for (const auto& [name, episodes] : results.models) {
     if (name.rfind("ref.", 0) == 0) groups.push_back({name, {&episodes}});
@@ -136,6 +137,14 @@ nlohmann::json ToJson(const ScenarioSetReport& report) {
     json["probability_of_improvement"].push_back(
         {{"model", row.model}, {"over", row.over}, {"metrics", metrics}});
   }
+  json["ensemble_gains"] = nlohmann::json::array();
+  for (const EnsembleGain& gain : report.ensemble_gains) {
+    nlohmann::json metrics;
+    for (const auto& [name, difference] : gain.metrics) {
+      metrics[name] = ConfidenceIntervalJson(difference);
+    }
+    json["ensemble_gains"].push_back({{"ensemble", gain.ensemble}, {"metrics", metrics}});
+  }
   json["agents_among_seeds"] = nlohmann::json::array();
   for (const AgentAmongSeeds& row : report.agents_among_seeds) {
     nlohmann::json metrics;
@@ -166,10 +175,10 @@ void ModelTable(std::ostringstream& md, const ScenarioSetReport& report) {
     }
     md << '\n';
   }
-  md << "\nIntervals: 95 %. Configurations with several seeds: over the training seeds' means, "
-        "percentile bootstrap for progress and rates, Student-t otherwise. Single agents: over the "
-        "scenarios, Wilson score for rates, percentile bootstrap for progress, Student-t "
-        "otherwise.\n";
+  md << "\nIntervals: 95 %. Configurations with several seeds: over the training seeds' means "
+        "(ensemble kinds: over their ensembles' means), percentile bootstrap for progress and "
+        "rates, Student-t otherwise. Single agents: over the scenarios, Wilson score for rates, "
+        "percentile bootstrap for progress, Student-t otherwise.\n";
 }
 
 void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
@@ -182,6 +191,30 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
     md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
        << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
        << Cell(row.metrics.at("collision")) << " | " << Cell(row.metrics.at("return")) << " |\n";
+  }
+}
+
+// "+1.4 [0.8, 2.0]", bold when the interval excludes 0; the difference alone for one ensemble.
+std::string Cell(const MeanConfidenceInterval& difference) {
+  if (difference.count < 2) return fmt::format("{:+.2f}", difference.mean);
+  const std::string cell =
+      fmt::format("{:+.2f} [{:.2f}, {:.2f}]", difference.mean, difference.low, difference.high);
+  return difference.low > 0.0 || difference.high < 0.0 ? "**" + cell + "**" : cell;
+}
+
+void EnsembleGainTable(std::ostringstream& md, const ScenarioSetReport& report) {
+  if (report.ensemble_gains.empty()) return;
+  md << "\nWhat averaging changes: each ensemble's mean minus the mean of its own members' means "
+        "(points for % metrics), on the same scenarios; over a kind's ensembles, the mean with a "
+        "95 % Student-t interval (bold: it excludes 0).\n\n"
+        "| ensemble | progress | cte m | collisions | time-outs | return "
+        "|\n|---|---|---|---|---|---|"
+        "\n";
+  for (const EnsembleGain& gain : report.ensemble_gains) {
+    md << "| " << gain.ensemble << " | " << Cell(gain.metrics.at("progress")) << " | "
+       << Cell(gain.metrics.at("cross_track_error")) << " | " << Cell(gain.metrics.at("collision"))
+       << " | " << Cell(gain.metrics.at("time_out")) << " | " << Cell(gain.metrics.at("return"))
+       << " |\n";
   }
 }
 
@@ -328,6 +361,19 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// The ensemble kinds and the runs they average, into the report's head and summary.json.
+void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
+  if (spec.ensembles.empty()) return;
+  md << "\nEnsembles, each acting with the mean of its members' deterministic actions; ensemble k "
+        "of a kind of count n takes seed k + j n of a configuration listed for the j-th time "
+        "(j = 0, 1, ...), so the n ensembles share no run:\n\n";
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    md << fmt::format("- {}: {} of [{}]\n", ensemble.name, ensemble.count,
+                      fmt::join(ensemble.members, ", "));
+    json["ensembles"][ensemble.name] = {{"members", ensemble.members}, {"count", ensemble.count}};
+  }
+}
+
 }  // namespace
 
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
@@ -344,15 +390,15 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
   }
   const auto reference = std::find_if(groups.begin(), groups.end(),
                                       [&](const auto& g) { return g.first == reference_config; });
-  for (const PpoConfigSpec& config : spec.ppo_configs) {
+  for (const SeededModel& model : spec.SeededModels()) {
     const auto& seeds = *std::find_if(groups.begin(), groups.end(),
-                                      [&](const auto& g) { return g.first == config.name; });
+                                      [&](const auto& g) { return g.first == model.name; });
     for (const auto& other : groups) {
       const bool is_reference = reference != groups.end() && other.first == reference->first;
-      if (other.first == config.name || !(is_reference || other.first.rfind("ref.", 0) == 0)) {
+      if (other.first == model.name || !(is_reference || other.first.rfind("ref.", 0) == 0)) {
         continue;
       }
-      ImprovementSummary row{config.name, other.first, {}};
+      ImprovementSummary row{model.name, other.first, {}};
       for (const StudyMetric& metric : StudyMetrics()) {
         row.metrics[metric.name] = ProbabilityOfImprovementInterval(
             Scores(seeds.second, metric), Scores(other.second, metric), kBootstrapSeed);
@@ -360,9 +406,12 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
       report.improvements.push_back(row);
       if (other.second.size() == 1 && seeds.second.size() >= 2) {
         report.agents_among_seeds.push_back(
-            PlaceAmongSeeds(config.name, seeds.second, other.first, *other.second.front()));
+            PlaceAmongSeeds(model.name, seeds.second, other.first, *other.second.front()));
       }
     }
+  }
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    report.ensemble_gains.push_back(MeasureEnsembleGain(ensemble, results));
   }
   return report;
 }
@@ -385,6 +434,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
      << " training seed(s) of " << spec.ppo_steps << " steps"
      << (own_steps.empty() ? "" : fmt::format(" ({})", fmt::join(own_steps, ", ")))
      << "; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s) << " s.\n";
+  EnsembleSection(md, json, spec);
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport report =
         SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
@@ -395,6 +445,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     ModelTable(md, report);
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
+    EnsembleGainTable(md, report);
     AgentsAmongSeedsTable(md, report);
     OutcomeTable(md, report);
     if (set == "paper") PaperTable(md, report, spec.evaluation.paper_results);

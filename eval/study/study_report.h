@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "eval/study/agent_among_seeds.h"
+#include "eval/study/ensemble_gain.h"
 #include "eval/study/outcome_breakdown.h"
 #include "eval/study/study_results.h"
 #include "src/seed_aggregates.h"
@@ -43,12 +44,14 @@ struct ScenarioSetReport {
   std::vector<ModelSummary> models;
   std::vector<ImprovementSummary> improvements;
   std::vector<AgentAmongSeeds> agents_among_seeds;  ///< every configuration x single agent
+  std::vector<EnsembleGain> ensemble_gains;         ///< every ensemble kind, against its members
 };
 
 /// The report of one scenario set: configurations (models "<config>.seed_<k>") summarised over
 /// their seeds, other models over scenarios; the probability of improvement of every
 /// configuration over `reference_config` (if present) and over each single model; where each
-/// single model falls among the seeds of each configuration of two or more seeds.
+/// single model falls among the seeds of each configuration of two or more seeds; what each
+/// ensemble kind gains over its own members.
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config);
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <regex>
 #include <set>
 
@@ -172,6 +173,58 @@ void ReadPpo(const Reader& reader, const YAML::Node& node, StudySpec& spec) {
   }
 }
 
+// How many times each configuration is listed in `members`.
+std::map<std::string, int> Multiplicities(const std::vector<std::string>& members) {
+  std::map<std::string, int> times;
+  for (const std::string& member : members) ++times[member];
+  return times;
+}
+
+EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YAML::Node& node,
+                          const StudySpec& spec) {
+  EnsembleSpec ensemble;
+  const std::string key = "ensembles." + name.as<std::string>();
+  ensemble.name = reader.Name(name, key);
+  const auto is_config = [&](const std::string& config) {
+    return std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                       [&](const PpoConfigSpec& c) { return c.name == config; });
+  };
+  if (is_config(ensemble.name)) reader.Fail(key, "is also the name of a PPO configuration");
+  reader.RequireMap(node, key, {"members", "count"});
+  const YAML::Node members = node["members"];
+  if (!members || !members.IsSequence() || members.size() < 2) {
+    reader.Fail(key + ".members", "expects a list of two or more PPO configurations");
+  }
+  for (std::size_t i = 0; i < members.size(); ++i) {
+    const std::string member_key = fmt::format("{}.members[{}]", key, i);
+    ensemble.members.push_back(reader.String(members[i], member_key));
+    if (!is_config(ensemble.members.back())) {
+      reader.Fail(member_key, "'" + ensemble.members.back() + "' is not a PPO configuration");
+    }
+  }
+  const int most = ensemble.MaxCount(spec.ppo_seeds);
+  if (most == 0) {
+    reader.Fail(key + ".members", fmt::format("lists a configuration more often than its {} "
+                                              "seed(s)",
+                                              spec.ppo_seeds));
+  }
+  ensemble.count = most;
+  if (node["count"]) {
+    ensemble.count = static_cast<int>(reader.Integer(node["count"], key + ".count", 1, most));
+  }
+  return ensemble;
+}
+
+std::vector<EnsembleSpec> ReadEnsembles(const Reader& reader, const YAML::Node& node,
+                                        const StudySpec& spec) {
+  std::vector<EnsembleSpec> ensembles;
+  if (!node) return ensembles;
+  reader.RequireMap(node, "ensembles", {});
+  for (const auto& item : node)
+    ensembles.push_back(ReadEnsemble(reader, item.first, item.second, spec));
+  return ensembles;
+}
+
 // A file named relative to the study file's folder; it must exist.
 std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
                                    const std::string& key) {
@@ -218,29 +271,60 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
 
 }  // namespace
 
+int EnsembleSpec::MemberSeed(std::size_t member, int k) const {
+  const auto earlier =
+      std::count(members.begin(), members.begin() + static_cast<long>(member), members[member]);
+  return k + static_cast<int>(earlier) * count;
+}
+
+int EnsembleSpec::MaxCount(int seeds) const {
+  int most = seeds;
+  for (const auto& [config, times] : Multiplicities(members)) most = std::min(most, seeds / times);
+  return most;
+}
+
+std::vector<SeededModel> StudySpec::SeededModels() const {
+  std::vector<SeededModel> models;
+  for (const PpoConfigSpec& config : ppo_configs) models.push_back({config.name, ppo_seeds});
+  for (const EnsembleSpec& ensemble : ensembles) models.push_back({ensemble.name, ensemble.count});
+  return models;
+}
+
 StudySpec LoadStudySpec(const std::filesystem::path& path) {
   const YAML::Node root = LoadYamlFile(path);
   const Reader reader(path);
-  reader.RequireMap(root, "", {"name", "dataset", "vaes", "ppo", "evaluation", "vae_figures"});
+  reader.RequireMap(root, "",
+                    {"name", "dataset", "vaes", "ppo", "ensembles", "evaluation", "vae_figures"});
   StudySpec spec;
   spec.name = root["name"] ? reader.Name(root["name"], "name") : path.stem().string();
   spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
   spec.vaes = ReadVaes(reader, root["vaes"]);
   ReadPpo(reader, root["ppo"], spec);
+  spec.ensembles = ReadEnsembles(reader, root["ensembles"], spec);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
-  const bool compares =
-      std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                  [&](const PpoConfigSpec& c) { return c.name == spec.evaluation.compare_to; });
+  const std::vector<SeededModel> models = spec.SeededModels();
+  const bool compares = std::any_of(models.begin(), models.end(), [&](const SeededModel& m) {
+    return m.name == spec.evaluation.compare_to;
+  });
   if (root["evaluation"] && root["evaluation"]["compare_to"] && !compares) {
-    reader.Fail("evaluation.compare_to",
-                "'" + spec.evaluation.compare_to + "' is not a PPO configuration of the study");
+    reader.Fail("evaluation.compare_to", "'" + spec.evaluation.compare_to +
+                                             "' is not a PPO configuration or ensemble of the "
+                                             "study");
   }
   return spec;
 }
 
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds) {
-  if (seeds > 0) spec.ppo_seeds = seeds;
+  if (seeds > 0) {
+    spec.ppo_seeds = seeds;
+    for (EnsembleSpec& ensemble : spec.ensembles) {
+      ensemble.count = std::min(ensemble.count, ensemble.MaxCount(seeds));
+    }
+    spec.ensembles.erase(std::remove_if(spec.ensembles.begin(), spec.ensembles.end(),
+                                        [](const EnsembleSpec& e) { return e.count == 0; }),
+                         spec.ensembles.end());
+  }
   if (only.empty()) return spec;
   std::vector<PpoConfigSpec> configs;
   std::set<std::string> used_vaes;
@@ -254,6 +338,14 @@ StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, in
     used_vaes.insert(config->vae);
   }
   spec.ppo_configs = configs;
+  spec.ensembles.erase(
+      std::remove_if(spec.ensembles.begin(), spec.ensembles.end(),
+                     [&](const EnsembleSpec& e) {
+                       return std::any_of(e.members.begin(), e.members.end(), [&](auto& member) {
+                         return std::find(only.begin(), only.end(), member) == only.end();
+                       });
+                     }),
+      spec.ensembles.end());
   spec.vae_figures = false;  // not needed by any configuration
   spec.vaes.erase(std::remove_if(spec.vaes.begin(), spec.vaes.end(),
                                  [&](const VaeSpec& v) { return used_vaes.count(v.name) == 0; }),

@@ -13,6 +13,8 @@
 //     configs:
 //       shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
 //       baseline: {extractor: baseline}
+//   ensembles:                                      # agents averaging several runs' actions
+//     two_shallow: {members: [shallow_locked, shallow_locked], count: 2}
 //   evaluation:
 //     episodes: 1000                                # scenarios of the study's own table
 //     seed: 1
@@ -52,6 +54,30 @@ struct PpoConfigSpec {
   std::int64_t steps = 0;
 };
 
+/// A kind of ensemble: agents acting with the mean of several of the study's runs' actions
+/// (eval/policy_ensemble.h), built once the runs exist and evaluated with them. Ensemble k of the
+/// kind takes seed k + j * count of the configuration listed for the j-th time in `members`
+/// (j = 0, 1, ...), so no two ensembles of a kind share a run and they stand for `count` training
+/// seeds: {members: [best, best, memory], count: 5} takes best's seeds k and k + 5 and memory's
+/// seed k.
+struct EnsembleSpec {
+  std::string name;
+  std::vector<std::string> members;  ///< PPO configurations; one listed twice gives two runs
+  int count = 1;                     ///< ensembles of this kind
+
+  /// The training seed of member `member` (an index into members) in ensemble `k`.
+  int MemberSeed(std::size_t member, int k) const;
+  /// The most ensembles of these members that `seeds` runs per configuration give.
+  int MaxCount(int seeds) const;
+};
+
+/// A model of several seeds in the report: a PPO configuration (its training seeds) or an ensemble
+/// kind (its ensembles); its models are named SeedModelName(name, k), k < seeds.
+struct SeededModel {
+  std::string name;
+  int seeds = 0;
+};
+
 struct EvaluationSpec {
   int episodes = 1000;
   std::uint64_t seed = 1;
@@ -70,6 +96,7 @@ struct StudySpec {
   std::int64_t ppo_steps = 3'000'000;
   Overrides ppo_overrides;
   std::vector<PpoConfigSpec> ppo_configs;
+  std::vector<EnsembleSpec> ensembles;
   EvaluationSpec evaluation;
   /// Also draw the paper's VAE figures (padding comparison, latent densities) on the study's
   /// dataset: eight small VAEs, a few minutes.
@@ -79,13 +106,17 @@ struct StudySpec {
   std::int64_t StepsOf(const PpoConfigSpec& config) const {
     return config.steps > 0 ? config.steps : ppo_steps;
   }
+  /// The PPO configurations, then the ensemble kinds, in file order.
+  std::vector<SeededModel> SeededModels() const;
 };
 
 /// The study of `path`; relative reference-agent paths are taken from the study file's folder.
 StudySpec LoadStudySpec(const std::filesystem::path& path);
 
-/// The study restricted to the PPO configurations `only` (and the VAEs they use, no VAE figures),
-/// with `seeds` training seeds when > 0. An unknown name is a UserError.
+/// The study restricted to the PPO configurations `only` (and the VAEs they use, the ensembles
+/// all of whose members it keeps, no VAE figures), with `seeds` training seeds when > 0 (and as
+/// many ensembles of each kind as they give, none when they give none). An unknown name is a
+/// UserError.
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
 
 }  // namespace colav

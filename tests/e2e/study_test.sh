@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The study runner end to end with the real programs at a tiny budget: a bad program key is
-# refused before any work; 2 PPO configurations x 2 seeds (one with a VAE) run to a report; a
+# refused before any work; 2 PPO configurations x 2 seeds (one with a VAE) and 2 ensembles of one
+# run of each run to a report; a
 # second invocation skips every job; a study stopped by SIGTERM during a PPO run exits 130 and the
 # same command then finishes it.
 #   study_test.sh BIN_DIR WORK_DIR
@@ -24,6 +25,8 @@ ppo:
   configs:
     shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true, steps: 3072}
     baseline: {extractor: baseline}
+ensembles:
+  pair: {members: [shallow_locked, baseline]}
 evaluation: {episodes: 6, seed: 3, paper_episodes: 4}
 YAML
 
@@ -40,7 +43,7 @@ status=0
   { tail -20 "$WORK/first.err"; fail "first run failed"; }
 grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
 for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
-  ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt \
+  ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt ensembles/pair/seed_1/policy.pt \
   eval/study/episodes.csv eval/paper/episodes.csv figures/study_models.png figures/paper_models.png \
   figures/study_trade_off.png figures/paper_trade_off.png \
   figures/training_baseline.png figures/training_shallow_locked.png; do
@@ -51,7 +54,8 @@ grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REP
   fail "no return in the report's probability of improvement"
 grep -q "| configuration | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
   fail "no table of how the runs ended"
-grep -q "10 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+grep -q "^- pair: 2 of \[shallow_locked, baseline\]$" "$WORK/run/REPORT.md" || fail "no ensembles"
+grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import csv, json, os, statistics, sys
 s = json.load(open(sys.argv[1]))
@@ -59,7 +63,7 @@ for name, episodes in (("study", 6), ("paper", 4)):
     sset = s["scenario_sets"][name]
     assert sset["episodes"] == episodes
     models = {m["name"]: m for m in sset["models"]}
-    assert set(models) == {"shallow_locked", "baseline"}, models.keys()
+    assert set(models) == {"shallow_locked", "baseline", "pair"}, models.keys()
     for m in models.values():
         assert m["seeds"] == 2
         c = m["metrics"]["collision"]
@@ -74,10 +78,22 @@ for name, episodes in (("study", 6), ("paper", 4)):
         seed_means = [statistics.fmean(float(r["reward"]) for r in rows
                                        if r["model"] == f'{m["name"]}.seed_{k}') for k in range(2)]
         assert abs(m["metrics"]["return"]["mean"] - statistics.fmean(seed_means)) < 1e-6, (seed_means, m)
+    # What averaging changes: each pair's progress minus its two runs' mean, over the 2 pairs.
+    rows = list(csv.DictReader(open(f"{os.path.dirname(sys.argv[1])}/eval/{name}/episodes.csv")))
+    progress = lambda model: statistics.fmean(float(r["progress"]) for r in rows
+                                              if r["model"] == model)
+    gains = [100 * (progress(f"pair.seed_{k}") - (progress(f"shallow_locked.seed_{k}") +
+                                                 progress(f"baseline.seed_{k}")) / 2)
+             for k in range(2)]
+    (gain,) = sset["ensemble_gains"]
+    assert gain["ensemble"] == "pair" and gain["metrics"]["progress"]["n"] == 2, gain
+    assert abs(gain["metrics"]["progress"]["mean"] - statistics.fmean(gains)) < 1e-6, (gains, gain)
     poi = sset["probability_of_improvement"]
-    assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline")]
+    assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline"),
+                                                      ("pair", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
+assert s["ensembles"] == {"pair": {"members": ["shallow_locked", "baseline"], "count": 2}}
 # How each run ended: its seeds' wall-clock, final std and late training episodes.
 assert {name: len(runs) for name, runs in s["runs"].items()} == {"shallow_locked": 2, "baseline": 2}
 for run in (run for runs in s["runs"].values() for run in runs):
@@ -92,7 +108,7 @@ grep -q "training seed(s) of 2048 steps (shallow_locked: 3072);" "$WORK/run/REPO
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
   fail "second run failed"
-grep -q "0 jobs run, 10 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+grep -q "0 jobs run, 12 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
 
 # Stopped in the middle of a longer PPO run, then resumed by the same command.
 sed -e 's/steps: 2048/steps: 400000/' "$WORK/tiny.yaml" >"$WORK/long.yaml"

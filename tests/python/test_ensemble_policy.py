@@ -1,5 +1,6 @@
-"""scripts/ensemble_policy.py: one policy file acting with the mean of its members' actions,
-memoryless and recurrent members side by side, run by evaluate, and one-line refusals."""
+"""ensemble_policy (eval/policy_ensemble.h): one policy file acting with the mean of its members'
+actions, memoryless and recurrent members side by side, loaded by Python's torch.jit and
+colav.Policy, run by evaluate, and one-line refusals."""
 
 import subprocess
 from typing import Tuple
@@ -9,9 +10,9 @@ import torch
 from torch import Tensor
 
 import colav
-from conftest import BIN_DIR, SOURCE_DIR
+from conftest import BIN_DIR
 
-SCRIPT = SOURCE_DIR / "scripts" / "ensemble_policy.py"
+PROGRAM = BIN_DIR / "ensemble_policy"
 LOG_SETTINGS = "env:\n  closeness: log\n"
 OBSERVATION_SIZE = 186
 
@@ -59,7 +60,7 @@ def save(module, path):
 
 
 def ensemble(*args):
-    return subprocess.run(["/usr/bin/python3", str(SCRIPT), *map(str, args)],
+    return subprocess.run([str(PROGRAM), *map(str, args)],
                           capture_output=True, text=True)
 
 
@@ -121,7 +122,7 @@ def test_bad_input_is_one_line_naming_it(tmp_path):
     unrecorded = save(bare, tmp_path / "unrecorded.pt")
     cases = {
         (log, linear): "linear.pt: observation settings differ from those of",
-        (log, tmp_path / "missing.pt"): "missing.pt: no such file",
+        (log, tmp_path / "missing.pt"): "missing.pt: no such policy file",
         (log, tmp_path / "garbage.pt"): "garbage.pt: not a TorchScript policy",
         (log, unrecorded): "unrecorded.pt: no observation settings",
         (log,): "an ensemble needs at least two policies",

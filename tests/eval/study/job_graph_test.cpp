@@ -90,6 +90,32 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
   EXPECT_FALSE(Has(evaluation.args, {"--set"}));
 }
 
+// Each ensemble is a job after the runs it averages, and a model of the evaluations after them.
+TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.ensembles = {{"mix", {"locked", "baseline", "locked"}, 1}};
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const StudyJob& ensemble = Find(jobs, "ensembles/mix/seed_0");
+  EXPECT_EQ(ensemble.program, "ensemble_policy");
+  EXPECT_EQ(ensemble.args,
+            (std::vector<std::string>{
+                "--out", "/s/ensembles/mix/seed_0/policy.pt", "/s/ppo/locked/seed_0/policy.pt",
+                "/s/ppo/baseline/seed_0/policy.pt", "/s/ppo/locked/seed_1/policy.pt"}));
+  EXPECT_EQ(ensemble.complete_marker, "/s/ensembles/mix/seed_0/policy.pt");
+  std::vector<std::string> dependencies;
+  for (const std::size_t d : ensemble.dependencies) dependencies.push_back(jobs[d].id);
+  EXPECT_EQ(dependencies, (std::vector<std::string>{"ppo/locked/seed_0", "ppo/baseline/seed_0",
+                                                    "ppo/locked/seed_1"}));
+  const StudyJob& evaluation = Find(jobs, "eval/study");
+  EXPECT_TRUE(Has(evaluation.args,
+                  {"--policy", "/s/ensembles/mix/seed_0/policy.pt", "--name", "mix.seed_0"}));
+  EXPECT_NE(std::find(evaluation.dependencies.begin(), evaluation.dependencies.end(),
+                      static_cast<std::size_t>(&ensemble - jobs.data())),
+            evaluation.dependencies.end());
+  EXPECT_EQ(evaluation.expected_models.at(9), "mix.seed_0");  // after the runs, before the agent
+}
+
 TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);

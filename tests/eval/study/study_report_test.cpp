@@ -95,6 +95,60 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_EQ(report.agents_among_seeds[1].config, "baseline");
 }
 
+// An ensemble kind is summarised over its ensembles and compared as a configuration is.
+TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
+  StudySpec spec;
+  spec.ppo_seeds = 2;
+  spec.ppo_configs = {{"baseline", "baseline", "", true, {}}};
+  spec.ensembles = {{"pair", {"baseline", "baseline"}, 1}};
+  ScenarioSetResults results;
+  results.episodes = 2;
+  results.models["baseline.seed_0"] = Episodes({80, 80}, {30, 30}, {100, 0});
+  results.models["baseline.seed_1"] = Episodes({70, 70}, {40, 40}, {100, 100});
+  results.models["pair.seed_0"] = Episodes({100, 90}, {10, 20}, {0, 0});
+  results.models["ref.agent"] = Episodes({100, 50}, {15, 15}, {0, 100});
+  const ScenarioSetReport report = SummariseScenarioSet(spec, results, "baseline");
+  ASSERT_EQ(report.models.size(), 3U);
+  EXPECT_EQ(report.models[1].name, "pair");
+  EXPECT_EQ(report.models[1].seeds, 1);
+  EXPECT_DOUBLE_EQ(report.models[1].metrics.at("progress").mean, 95.0);
+  // baseline over the agent; the pair over baseline and over the agent.
+  ASSERT_EQ(report.improvements.size(), 3U);
+  EXPECT_EQ(report.improvements[1].model, "pair");
+  EXPECT_EQ(report.improvements[1].over, "baseline");
+  // Collisions per scenario against baseline's seeds: t0 {0} vs {100, 100}, 2 wins; t1 {0} vs
+  // {0, 100}, a tie and a win.
+  EXPECT_DOUBLE_EQ(report.improvements[1].metrics.at("collision").probability, 3.5 / 4.0);
+  EXPECT_EQ(report.improvements[2].over, "ref.agent");
+  // Against its own members (baseline's seeds 0 and 1): progress 95 - 75, collisions 0 - 75.
+  ASSERT_EQ(report.ensemble_gains.size(), 1U);
+  EXPECT_EQ(report.ensemble_gains[0].ensemble, "pair");
+  EXPECT_DOUBLE_EQ(report.ensemble_gains[0].metrics.at("progress").mean, 20.0);
+  EXPECT_DOUBLE_EQ(report.ensemble_gains[0].metrics.at("collision").mean, -75.0);
+  EXPECT_EQ(report.ensemble_gains[0].metrics.at("collision").count, 1U);
+}
+
+// Over a kind's ensembles: ensemble k against the runs it holds, not against other runs.
+TEST(StudyReportTest, AnEnsembleIsComparedWithItsOwnMembers) {
+  StudySpec spec;
+  spec.ppo_seeds = 2;
+  spec.ppo_configs = {{"a", "baseline", "", true, {}}, {"b", "baseline", "", true, {}}};
+  const EnsembleSpec pair{"pair", {"a", "b"}, 2};
+  ScenarioSetResults results;
+  results.episodes = 1;
+  results.models["a.seed_0"] = Episodes({60}, {10}, {0});
+  results.models["b.seed_0"] = Episodes({80}, {30}, {0});
+  results.models["a.seed_1"] = Episodes({90}, {20}, {0});
+  results.models["b.seed_1"] = Episodes({100}, {40}, {0});
+  results.models["pair.seed_0"] = Episodes({75}, {20}, {0});   // +5 over its members' 70
+  results.models["pair.seed_1"] = Episodes({100}, {30}, {0});  // +5 over its members' 95
+  const EnsembleGain gain = MeasureEnsembleGain(pair, results);
+  const MeanConfidenceInterval& progress = gain.metrics.at("progress");
+  EXPECT_DOUBLE_EQ(progress.mean, 5.0);
+  EXPECT_DOUBLE_EQ(progress.low, 5.0);  // the same gain twice: no spread
+  EXPECT_DOUBLE_EQ(gain.metrics.at("cross_track_error").mean, 0.0);
+}
+
 // Three seeds with cte 10, 20 and 30 m (mean 20, sd 10): one more seed lands within 20 +-
 // t(0.975, 2) * 10 * sqrt(4 / 3) = 20 +- 49.68 m; progress 98, 99 and 100 % (sd 1) within 99 +-
 // 4.97, clipped at 100; collisions 0 % on every seed, a zero-width interval.

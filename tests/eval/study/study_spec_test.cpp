@@ -99,6 +99,42 @@ TEST(StudySpecTest, SelectsConfigurationsAndSeeds) {
             std::string::npos);
 }
 
+// Ensemble k of a kind of count n takes seed k + j n of a configuration listed for the j-th time;
+// without a count, as many ensembles as the seeds give.
+TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, std::string(kStudy) + R"(ensembles:
+  mixed: {members: [shallow_locked, baseline, shallow_locked]}
+  pair: {members: [baseline, shallow_log], count: 2}
+)"));
+  ASSERT_EQ(spec.ensembles.size(), 2U);
+  const EnsembleSpec& mixed = spec.ensembles[0];
+  EXPECT_EQ(mixed.members,
+            (std::vector<std::string>{"shallow_locked", "baseline", "shallow_locked"}));
+  EXPECT_EQ(mixed.count, 1);  // 3 seeds give one pair of shallow_locked runs
+  EXPECT_EQ(mixed.MemberSeed(0, 0), 0);
+  EXPECT_EQ(mixed.MemberSeed(1, 0), 0);
+  EXPECT_EQ(mixed.MemberSeed(2, 0), 1);
+  const EnsembleSpec& pair = spec.ensembles[1];
+  EXPECT_EQ(pair.count, 2);
+  EXPECT_EQ(pair.MemberSeed(0, 1), 1);
+  EXPECT_EQ(pair.MaxCount(3), 3);
+  EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5};
+  EXPECT_EQ(quad.MemberSeed(2, 3), 8);  // a's seeds 3 and 8, b's 3 and 8 in ensemble 3
+  EXPECT_EQ(quad.MemberSeed(3, 3), 8);
+  EXPECT_EQ(quad.MaxCount(10), 5);
+  const std::vector<SeededModel> models = spec.SeededModels();
+  ASSERT_EQ(models.size(), 5U);
+  EXPECT_EQ(models[3].name, "mixed");
+  EXPECT_EQ(models[4].seeds, 2);
+  // Fewer seeds, fewer ensembles; a kind whose members are not all kept goes.
+  const StudySpec one_seed = SelectConfigs(spec, {}, 1);
+  ASSERT_EQ(one_seed.ensembles.size(), 1U);
+  EXPECT_EQ(one_seed.ensembles[0].name, "pair");
+  EXPECT_EQ(one_seed.ensembles[0].count, 1);
+  EXPECT_TRUE(SelectConfigs(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
+}
+
 TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
   const TemporaryFolder folder;
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -118,6 +154,14 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"vaes: {s: {}}", "ppo"},
       {"ppo: {configs: {a: {}}}\nevaluation: {compare_to: b}", "evaluation.compare_to"},
       {"ppo: {configs: {a: {}}}\nvae_figures: often", "vae_figures"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a]}}", "ensembles.e.members"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, b]}}", "ensembles.e.members[1]"},
+      {"ppo: {seeds: 3, configs: {a: {}}}\nensembles: {e: {members: [a, a], count: 2}}",
+       "ensembles.e.count"},
+      {"ppo: {seeds: 1, configs: {a: {}}}\nensembles: {e: {members: [a, a]}}",
+       "ensembles.e.members"},
+      {"ppo: {configs: {a: {}}}\nensembles: {a: {members: [a, a]}}", "ensembles.a"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], size: 2}}", "ensembles.e.size"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });
