@@ -6,6 +6,8 @@
 #include <system_error>
 #include <vector>
 
+#include "env/environment_spec.h"
+#include "env/range_finder.h"
 #include "models/observation_settings_record.h"
 #include "models/torchscript_source.h"
 #include "src/error.h"
@@ -15,44 +17,57 @@ namespace {
 
 std::string MemberName(std::size_t index) { return "member_" + std::to_string(index); }
 
-std::string ClippedSource(const std::string& action) {
-  return "torch.clamp(" + action + ", -1.0, 1.0)";
-}
-
-// forward(obs): the mean of the memoryless members' clipped actions.
-std::string MemorylessSource(std::size_t members) {
-  std::vector<std::string> actions;
-  for (std::size_t i = 0; i < members; ++i) {
-    actions.push_back(ClippedSource("self." + MemberName(i) + ".forward(obs)"));
-  }
-  return fmt::format(
-      "def forward(self, obs: Tensor) -> Tensor:\n"
-      "    return torch.stack([{}]).mean(0)\n",
-      fmt::join(actions, ", "));
-}
-
-// initial_state, step and a failing forward: each recurrent member steps its own columns of the
-// state, the memoryless ones act from the observation alone.
-std::string RecurrentSource(const std::vector<Policy>& members, int state_size) {
-  std::vector<std::string> initial_states;
-  std::vector<std::string> actions;
-  std::vector<std::string> next_states;
+// TorchScript statements that give every member's clipped action, action_<i>, and every recurrent
+// member's next state, state_<i>, from its own columns of `state`; and the recurrent members'
+// initial states.
+struct MemberSource {
   std::string body;
+  std::vector<std::string> actions;
+  std::vector<std::string> initial_states;
+  std::vector<std::string> next_states;
+};
+
+MemberSource MembersSource(const std::vector<Policy>& members) {
+  MemberSource source;
   int column = 0;
   for (std::size_t i = 0; i < members.size(); ++i) {
     const std::string member = "self." + MemberName(i);
-    if (!members[i].recurrent()) {
-      actions.push_back(ClippedSource(member + ".forward(obs)"));
-      continue;
+    if (members[i].recurrent()) {
+      const int end = column + members[i].recurrent_size();
+      source.initial_states.push_back(member + ".initial_state(batch)");
+      source.body += fmt::format("    action_{0}, state_{0} = {1}.step(obs, state[:, {2}:{3}])\n",
+                                 i, member, column, end);
+      source.next_states.push_back(fmt::format("state_{}", i));
+      column = end;
+    } else {
+      source.body += fmt::format("    action_{} = {}.forward(obs)\n", i, member);
     }
-    const int end = column + members[i].recurrent_size();
-    initial_states.push_back(member + ".initial_state(batch)");
-    body += fmt::format("    action_{0}, state_{0} = {1}.step(obs, state[:, {2}:{3}])\n", i, member,
-                        column, end);
-    actions.push_back(ClippedSource(fmt::format("action_{}", i)));
-    next_states.push_back(fmt::format("state_{}", i));
-    column = end;
+    source.body += fmt::format("    action_{0} = torch.clamp(action_{0}, -1.0, 1.0)\n", i);
+    source.actions.push_back(fmt::format("action_{}", i));
   }
+  return source;
+}
+
+// The expression of the ensemble's action from the members' clipped actions.
+std::string CombinedActionSource(const std::vector<std::string>& actions, const EnsembleRule& rule,
+                                 const ObservationSettings& settings) {
+  if (!rule.near_within_m)
+    return fmt::format("torch.stack([{}]).mean(0)", fmt::join(actions, ", "));
+  // Closeness falls as the range grows: a ray at most near_within_m away reads at least this.
+  const double near = Closeness(*rule.near_within_m, settings.closeness);
+  return fmt::format("torch.where(obs[:, {}:{}].max(1, keepdim=True)[0] >= {:.17g}, {}, {})",
+                     kNavigationSize, kNavigationSize + kNumRays, near, actions[0], actions[1]);
+}
+
+std::string MemorylessSource(const MemberSource& source, const std::string& action) {
+  return fmt::format(
+      "def forward(self, obs: Tensor) -> Tensor:\n"
+      "{}"
+      "    return {}\n",
+      source.body, action);
+}
+
+std::string RecurrentSource(const MemberSource& source, const std::string& action, int state_size) {
   return fmt::format(
       "def initial_state(self, batch: int) -> Tensor:\n"
       "    return torch.cat([{0}], 1)\n"
@@ -60,13 +75,13 @@ std::string RecurrentSource(const std::vector<Policy>& members, int state_size) 
       "    assert state.dim() == 2 and state.size(0) == obs.size(0) and state.size(1) == {1}, "
       "'policy: states [B, recurrent_size] expected (initial_state(B) at an episode start)'\n"
       "{2}"
-      "    return torch.stack([{3}]).mean(0), torch.cat([{4}], 1)\n"
+      "    return {3}, torch.cat([{4}], 1)\n"
       "def forward(self, obs: Tensor) -> Tensor:\n"
       "    assert False, 'recurrent policy: call step(obs, state) starting from "
       "initial_state(B)'\n"
       "    return obs\n",
-      fmt::join(initial_states, ", "), state_size, body, fmt::join(actions, ", "),
-      fmt::join(next_states, ", "));
+      fmt::join(source.initial_states, ", "), state_size, source.body, action,
+      fmt::join(source.next_states, ", "));
 }
 
 // The members' common observation settings.
@@ -87,8 +102,23 @@ ObservationSettings CommonSettings(const std::vector<Policy>& members) {
 
 }  // namespace
 
-torch::jit::Module EnsemblePolicy(const std::vector<Policy>& members) {
-  if (members.size() < 2) throw UserError("an ensemble needs at least two policies");
+void CheckEnsemble(std::size_t members, const EnsembleRule& rule) {
+  if (members < 2) throw UserError("an ensemble needs at least two policies");
+  if (!rule.near_within_m) return;
+  if (members != 2) {
+    throw UserError(
+        fmt::format("--near-within: takes exactly two policies (the one near "
+                    "obstacles, the other), got {}",
+                    members));
+  }
+  if (!(*rule.near_within_m > 0.0 && *rule.near_within_m < RangeFinder::kRange)) {
+    throw UserError(fmt::format("--near-within {}: expects metres in (0, {})", *rule.near_within_m,
+                                RangeFinder::kRange));
+  }
+}
+
+torch::jit::Module EnsemblePolicy(const std::vector<Policy>& members, const EnsembleRule& rule) {
+  CheckEnsemble(members.size(), rule);
   const ObservationSettings settings = CommonSettings(members);
   torch::jit::Module ensemble("PolicyEnsemble");
   std::string paths;
@@ -100,19 +130,21 @@ torch::jit::Module EnsemblePolicy(const std::vector<Policy>& members) {
   }
   RecordObservationSettings(ensemble, settings);
   ensemble.register_attribute("member_paths", c10::StringType::get(), paths);
+  const MemberSource source = MembersSource(members);
+  const std::string action = CombinedActionSource(source.actions, rule, settings);
   if (state_size > 0) {
     ensemble.register_attribute("recurrent_size", c10::IntType::get(), state_size);
-    ensemble.define(RecurrentSource(members, state_size));
+    ensemble.define(RecurrentSource(source, action, state_size));
   } else {
-    ensemble.define(MemorylessSource(members.size()));
+    ensemble.define(MemorylessSource(source, action));
   }
   ensemble.eval();
   return ensemble;
 }
 
 void WriteEnsemblePolicy(const std::vector<std::filesystem::path>& members,
-                         const std::filesystem::path& out) {
-  if (members.size() < 2) throw UserError("an ensemble needs at least two policies");
+                         const std::filesystem::path& out, const EnsembleRule& rule) {
+  CheckEnsemble(members.size(), rule);
   for (const std::filesystem::path& member : members) {
     std::error_code same_file_unknown;
     if (std::filesystem::equivalent(member, out, same_file_unknown)) {
@@ -123,7 +155,7 @@ void WriteEnsemblePolicy(const std::vector<std::filesystem::path>& members,
   for (const std::filesystem::path& member : members) {
     policies.emplace_back(member, DefaultPolicyName(member));
   }
-  SaveScript(EnsemblePolicy(policies), out);
+  SaveScript(EnsemblePolicy(policies, rule), out);
 }
 
 }  // namespace colav

@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "env/range_finder.h"
 #include "eval/policy_ensemble.h"
 #include "src/cli.h"
+#include "src/number_flag.h"
 #include "src/output_path.h"
 
 namespace colav {
@@ -19,18 +21,27 @@ int EnsemblePolicyProgram(int argc, char** argv) {
       "actions (each clipped to [-1, 1]): trained policy files of any recipe, memoryless or\n"
       "recurrent, sharing their observation settings. The output has a trained policy.pt's\n"
       "interface, so evaluate, study and colav.Policy run it; with a recurrent member it is\n"
-      "recurrent, each member stepping its own slice of the state."};
+      "recurrent, each member stepping its own slice of the state. With --near-within M, two\n"
+      "members: the first steers while an obstacle is within M metres, the second otherwise."};
   std::vector<std::string> members;
   std::string out;
+  double near_within_m = 0.0;
   app.add_option("policies", members, "the members' policy files (TorchScript), two or more")
       ->required();
   app.add_option("--out", out, "the ensemble's policy file")->required();
+  CLI::Option* near_within = AddNumberFlag<double>(
+      app, "--near-within", near_within_m,
+      "metres: the first of two members steers while the newest scan's nearest return is this "
+      "close, the second otherwise (default: the mean of every member's action)",
+      0.0, RangeFinder::kRange);
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
   config_flags.Resolve();
   RequireWritableFile(out, "--out");
   const std::vector<std::filesystem::path> paths(members.begin(), members.end());
-  WriteEnsemblePolicy(paths, out);
+  EnsembleRule rule;
+  if (near_within->count() > 0) rule.near_within_m = near_within_m;
+  WriteEnsemblePolicy(paths, out, rule);
   std::cout << "ensemble_policy: " << out << ": " << members.size() << " members\n";
   return 0;
 }

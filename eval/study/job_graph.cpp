@@ -1,5 +1,7 @@
 #include "eval/study/job_graph.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <map>
 #include <utility>
@@ -109,6 +111,10 @@ void AddEnsembleJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
           NewJob("ensembles/" + ensemble.name + "/seed_" + std::to_string(k), "ensemble_policy",
                  {"--out", policy.string()}, policy, kEnsembleSeconds);
       job.check_configuration = false;  // every argument comes from the study, none from the user
+      if (ensemble.near_within_m) {
+        job.args.insert(job.args.end(),
+                        {"--near-within", fmt::format("{}", *ensemble.near_within_m)});
+      }
       for (std::size_t i = 0; i < ensemble.members.size(); ++i) {
         const std::filesystem::path member =
             RunPolicy(out, ensemble.members[i], ensemble.MemberSeed(i, k));

@@ -364,13 +364,21 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
 // The ensemble kinds and the runs they average, into the report's head and summary.json.
 void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
   if (spec.ensembles.empty()) return;
-  md << "\nEnsembles, each acting with the mean of its members' deterministic actions; ensemble k "
+  md << "\nEnsembles, each acting with the mean of its members' deterministic actions (unless "
+        "said otherwise); ensemble k "
         "of a kind of count n takes seed k + j n of a configuration listed for the j-th time "
         "(j = 0, 1, ...), so the n ensembles share no run:\n\n";
   for (const EnsembleSpec& ensemble : spec.ensembles) {
-    md << fmt::format("- {}: {} of [{}]\n", ensemble.name, ensemble.count,
-                      fmt::join(ensemble.members, ", "));
+    md << fmt::format(
+        "- {}: {} of [{}]{}\n", ensemble.name, ensemble.count, fmt::join(ensemble.members, ", "),
+        ensemble.near_within_m ? fmt::format(", the first steering within {} m of an obstacle, the "
+                                             "second otherwise",
+                                             *ensemble.near_within_m)
+                               : "");
     json["ensembles"][ensemble.name] = {{"members", ensemble.members}, {"count", ensemble.count}};
+    if (ensemble.near_within_m) {
+      json["ensembles"][ensemble.name]["near_within_m"] = *ensemble.near_within_m;
+    }
   }
 }
 

@@ -16,6 +16,7 @@ namespace colav {
 namespace {
 
 constexpr std::int64_t kMaxPpoSteps = 1'000'000'000;
+constexpr double kSensorRangeM = 150.0;  // env/range_finder.h (the study links no simulator)
 
 // Errors name the file and the key path ("studies/x.yaml: ppo.configs.best.locked: ...").
 class Reader {
@@ -76,6 +77,23 @@ class Reader {
                     "], got '" + text + "'");
     }
     return static_cast<std::int64_t>(value);
+  }
+
+  // A number strictly between `low` and `high`.
+  double Number(const YAML::Node& node, const std::string& key, double low, double high) const {
+    const std::string text = String(node, key);
+    double value = NAN;
+    try {
+      std::size_t used = 0;
+      value = std::stod(text, &used);
+      if (used != text.size()) value = NAN;
+    } catch (const std::exception&) {
+      value = NAN;
+    }
+    if (!(value > low && value < high)) {
+      Fail(key, fmt::format("expects a number in ({}, {}), got '{}'", low, high, text));
+    }
+    return value;
   }
 
   bool Bool(const YAML::Node& node, const std::string& key) const {
@@ -190,7 +208,7 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
                        [&](const PpoConfigSpec& c) { return c.name == config; });
   };
   if (is_config(ensemble.name)) reader.Fail(key, "is also the name of a PPO configuration");
-  reader.RequireMap(node, key, {"members", "count"});
+  reader.RequireMap(node, key, {"members", "count", "near_within_m"});
   const YAML::Node members = node["members"];
   if (!members || !members.IsSequence() || members.size() < 2) {
     reader.Fail(key + ".members", "expects a list of two or more PPO configurations");
@@ -207,6 +225,15 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
     reader.Fail(key + ".members", fmt::format("lists a configuration more often than its {} "
                                               "seed(s)",
                                               spec.ppo_seeds));
+  }
+  if (node["near_within_m"]) {
+    if (ensemble.members.size() != 2) {
+      reader.Fail(key + ".near_within_m",
+                  "takes exactly two members (the one near obstacles, "
+                  "the other)");
+    }
+    ensemble.near_within_m =
+        reader.Number(node["near_within_m"], key + ".near_within_m", 0.0, kSensorRangeM);
   }
   ensemble.count = most;
   if (node["count"]) {

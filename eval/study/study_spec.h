@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -64,6 +65,9 @@ struct EnsembleSpec {
   std::string name;
   std::vector<std::string> members;  ///< PPO configurations; one listed twice gives two runs
   int count = 1;                     ///< ensembles of this kind
+  /// Two members only: the first steers while an obstacle is within this many metres, the second
+  /// otherwise (EnsembleRule, eval/policy_ensemble.h); absent: the mean of every member's action.
+  std::optional<double> near_within_m;
 
   /// The training seed of member `member` (an index into members) in ensemble `k`.
   int MemberSeed(std::size_t member, int k) const;

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "env/environment_spec.h"
+#include "env/range_finder.h"
 #include "models/observation_settings_record.h"
 #include "tests/eval/test_policies.h"
 #include "tests/src/test_util.h"
@@ -46,7 +48,7 @@ TEST(EnsemblePolicy, AveragesTheActionsEachMemberWouldBeEvaluatedWith) {
   // evaluate clips the first member's thrust of 3 to 1: the ensemble averages 1 and -1, not 3.
   WriteEnsemblePolicy({SaveMember(ConstantPolicy("3.0, 0.0"), folder / "a.pt"),
                        SaveMember(ConstantPolicy("-1.0, 0.5"), folder / "b.pt")},
-                      folder / "ensemble.pt");
+                      folder / "ensemble.pt", {});
   Policy ensemble(folder / "ensemble.pt", "ensemble");
   EXPECT_FALSE(ensemble.recurrent());
   EXPECT_EQ(ensemble.settings_origin(), "recorded in the file");
@@ -59,7 +61,7 @@ TEST(EnsemblePolicy, StartsAndStepsEachMemoryInItsOwnColumns) {
   WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, -0.5"), folder / "plain.pt"),
                        SaveMember(CountingPolicy(), folder / "counting.pt"),
                        SaveMember(tp::RecurrentReactivePolicy(4), folder / "reactive.pt")},
-                      folder / "ensemble.pt");
+                      folder / "ensemble.pt", {});
   Policy ensemble(folder / "ensemble.pt", "ensemble");
   Policy counting(folder / "counting.pt", "counting");
   Policy reactive(folder / "reactive.pt", "reactive");
@@ -80,13 +82,52 @@ TEST(EnsemblePolicy, StartsAndStepsEachMemoryInItsOwnColumns) {
   }
 }
 
+// Observations [3, 186] whose nearest returns lie at `ranges` metres (150: none), one per row.
+torch::Tensor ObservationsWithNearestReturns(const std::vector<double>& ranges) {
+  torch::Tensor obs = torch::zeros({static_cast<std::int64_t>(ranges.size()), kObservationSize});
+  for (std::size_t row = 0; row < ranges.size(); ++row) {
+    const double closeness = Closeness(ranges[row], ObservationSettings{}.closeness);
+    obs[static_cast<std::int64_t>(row)][kNavigationSize + 17] = closeness;        // any ray
+    obs[static_cast<std::int64_t>(row)][kNavigationSize + 90] = closeness / 2.0;  // a farther one
+  }
+  return obs;
+}
+
+TEST(EnsemblePolicy, TheFirstOfTwoSteersNearObstaclesAndBothMemoriesStep) {
+  const TemporaryFolder folder;
+  WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, -0.5"), folder / "near.pt"),
+                       SaveMember(CountingPolicy(), folder / "far.pt")},
+                      folder / "ensemble.pt", {30.0});
+  Policy ensemble(folder / "ensemble.pt", "ensemble");
+  Policy far(folder / "far.pt", "far");
+  torch::Tensor states = ensemble.InitialStates(3);
+  torch::Tensor far_states = far.InitialStates(3);
+  for (int step = 0; step < 2; ++step) {  // the far member's memory counts every step
+    const torch::Tensor obs = ObservationsWithNearestReturns({29.0, 31.0, 150.0});
+    const torch::Tensor far_actions = far.Step(obs, far_states);
+    const torch::Tensor actions = ensemble.Step(obs, states);
+    EXPECT_TRUE(torch::equal(actions[0], torch::tensor({1.0F, -0.5F}))) << step;
+    EXPECT_TRUE(torch::equal(actions.slice(0, 1), far_actions.slice(0, 1))) << step;
+    EXPECT_TRUE(torch::equal(states, far_states)) << step;
+  }
+}
+
+TEST(EnsemblePolicy, RefusesARuleItCannotApply) {
+  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(3, {30.0}); }),
+            "--near-within: takes exactly two policies (the one near obstacles, the other), got 3");
+  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(2, {150.0}); }),
+            "--near-within 150: expects metres in (0, 150)");
+  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(1, {}); }),
+            "an ensemble needs at least two policies");
+}
+
 TEST(EnsemblePolicy, RefusesToWriteOverAMember) {
   const TemporaryFolder folder;
   const std::filesystem::path a = SaveMember(ConstantPolicy("1.0, 0.0"), folder / "a.pt");
   const std::filesystem::path b = SaveMember(ConstantPolicy("0.0, 1.0"), folder / "b.pt");
   const std::string before = testing_util::ReadFile(b);
   EXPECT_EQ(UserErrorMessage([&] {
-              WriteEnsemblePolicy({a, b}, folder / "." / "b.pt");
+              WriteEnsemblePolicy({a, b}, folder / "." / "b.pt", {});
             }),
             "--out " + (folder / "." / "b.pt").string() + ": is one of the members");
   EXPECT_EQ(testing_util::ReadFile(b), before);

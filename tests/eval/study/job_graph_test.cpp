@@ -114,6 +114,12 @@ TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
                       static_cast<std::size_t>(&ensemble - jobs.data())),
             evaluation.dependencies.end());
   EXPECT_EQ(evaluation.expected_models.at(9), "mix.seed_0");  // after the runs, before the agent
+  // Two helmsmen: the first near obstacles.
+  spec.ensembles = {{"helm", {"locked", "baseline"}, 3, 30.5}};
+  EXPECT_EQ(Find(BuildJobGraph(spec, "/s"), "ensembles/helm/seed_2").args,
+            (std::vector<std::string>{"--out", "/s/ensembles/helm/seed_2/policy.pt",
+                                      "--near-within", "30.5", "/s/ppo/locked/seed_2/policy.pt",
+                                      "/s/ppo/baseline/seed_2/policy.pt"}));
 }
 
 TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {

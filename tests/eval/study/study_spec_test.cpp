@@ -105,7 +105,7 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   const TemporaryFolder folder;
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, std::string(kStudy) + R"(ensembles:
   mixed: {members: [shallow_locked, baseline, shallow_locked]}
-  pair: {members: [baseline, shallow_log], count: 2}
+  pair: {members: [baseline, shallow_log], count: 2, near_within_m: 30.5}
 )"));
   ASSERT_EQ(spec.ensembles.size(), 2U);
   const EnsembleSpec& mixed = spec.ensembles[0];
@@ -115,8 +115,10 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_EQ(mixed.MemberSeed(0, 0), 0);
   EXPECT_EQ(mixed.MemberSeed(1, 0), 0);
   EXPECT_EQ(mixed.MemberSeed(2, 0), 1);
+  EXPECT_FALSE(mixed.near_within_m);
   const EnsembleSpec& pair = spec.ensembles[1];
   EXPECT_EQ(pair.count, 2);
+  EXPECT_EQ(pair.near_within_m, 30.5);
   EXPECT_EQ(pair.MemberSeed(0, 1), 1);
   EXPECT_EQ(pair.MaxCount(3), 3);
   EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5};
@@ -162,6 +164,12 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
        "ensembles.e.members"},
       {"ppo: {configs: {a: {}}}\nensembles: {a: {members: [a, a]}}", "ensembles.a"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], size: 2}}", "ensembles.e.size"},
+      {"ppo: {seeds: 3, configs: {a: {}}}\nensembles: {e: {members: [a, a, a], near_within_m: 9}}",
+       "ensembles.e.near_within_m"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], near_within_m: 150}}",
+       "ensembles.e.near_within_m"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], near_within_m: near}}",
+       "ensembles.e.near_within_m"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });
