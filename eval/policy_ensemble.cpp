@@ -51,8 +51,9 @@ MemberSource MembersSource(const std::vector<Policy>& members) {
 // The expression of the ensemble's action from the members' clipped actions.
 std::string CombinedActionSource(const std::vector<std::string>& actions, const EnsembleRule& rule,
                                  const ObservationSettings& settings) {
-  if (!rule.near_within_m)
+  if (!rule.near_within_m) {
     return fmt::format("torch.stack([{}]).mean(0)", fmt::join(actions, ", "));
+  }
   // Closeness falls as the range grows: a ray at most near_within_m away reads at least this.
   const double near = Closeness(*rule.near_within_m, settings.closeness);
   return fmt::format("torch.where(obs[:, {}:{}].max(1, keepdim=True)[0] >= {:.17g}, {}, {})",
@@ -152,6 +153,7 @@ void WriteEnsemblePolicy(const std::vector<std::filesystem::path>& members,
     }
   }
   std::vector<Policy> policies;
+  policies.reserve(members.size());
   for (const std::filesystem::path& member : members) {
     policies.emplace_back(member, DefaultPolicyName(member));
   }

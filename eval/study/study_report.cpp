@@ -204,12 +204,11 @@ std::string Cell(const MeanConfidenceInterval& difference) {
 
 void EnsembleGainTable(std::ostringstream& md, const ScenarioSetReport& report) {
   if (report.ensemble_gains.empty()) return;
-  md << "\nWhat averaging changes: each ensemble's mean minus the mean of its own members' means "
+  md << "\nWhat combining changes: each ensemble's mean minus the mean of its own members' means "
         "(points for % metrics), on the same scenarios; over a kind's ensembles, the mean with a "
         "95 % Student-t interval (bold: it excludes 0).\n\n"
-        "| ensemble | progress | cte m | collisions | time-outs | return "
-        "|\n|---|---|---|---|---|---|"
-        "\n";
+        "| ensemble | progress | cte m | collisions | time-outs | return |\n"
+        "|---|---|---|---|---|---|\n";
   for (const EnsembleGain& gain : report.ensemble_gains) {
     md << "| " << gain.ensemble << " | " << Cell(gain.metrics.at("progress")) << " | "
        << Cell(gain.metrics.at("cross_track_error")) << " | " << Cell(gain.metrics.at("collision"))

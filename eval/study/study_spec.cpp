@@ -18,6 +18,17 @@ namespace {
 constexpr std::int64_t kMaxPpoSteps = 1'000'000'000;
 constexpr double kSensorRangeM = 150.0;  // env/range_finder.h (the study links no simulator)
 
+// The number `text` spells, NaN unless all of it is one.
+double ParseNumber(const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    return used == text.size() ? value : NAN;
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
+
 // Errors name the file and the key path ("studies/x.yaml: ppo.configs.best.locked: ...").
 class Reader {
  public:
@@ -63,14 +74,7 @@ class Reader {
   std::int64_t Integer(const YAML::Node& node, const std::string& key, std::int64_t min,
                        std::int64_t max) const {
     const std::string text = String(node, key);
-    double value = 0.0;
-    try {
-      std::size_t used = 0;
-      value = std::stod(text, &used);
-      if (used != text.size()) value = NAN;
-    } catch (const std::exception&) {
-      value = NAN;
-    }
+    const double value = ParseNumber(text);
     if (!std::isfinite(value) || std::floor(value) != value || value < static_cast<double>(min) ||
         value > static_cast<double>(max)) {
       Fail(key, "expects a whole number in [" + std::to_string(min) + ", " + std::to_string(max) +
@@ -82,14 +86,7 @@ class Reader {
   // A number strictly between `low` and `high`.
   double Number(const YAML::Node& node, const std::string& key, double low, double high) const {
     const std::string text = String(node, key);
-    double value = NAN;
-    try {
-      std::size_t used = 0;
-      value = std::stod(text, &used);
-      if (used != text.size()) value = NAN;
-    } catch (const std::exception&) {
-      value = NAN;
-    }
+    const double value = ParseNumber(text);
     if (!(value > low && value < high)) {
       Fail(key, fmt::format("expects a number in ({}, {}), got '{}'", low, high, text));
     }
@@ -247,8 +244,9 @@ std::vector<EnsembleSpec> ReadEnsembles(const Reader& reader, const YAML::Node& 
   std::vector<EnsembleSpec> ensembles;
   if (!node) return ensembles;
   reader.RequireMap(node, "ensembles", {});
-  for (const auto& item : node)
+  for (const auto& item : node) {
     ensembles.push_back(ReadEnsemble(reader, item.first, item.second, spec));
+  }
   return ensembles;
 }
 
