@@ -56,10 +56,11 @@ bool WritesReport(const JobRunSummary& summary, const StudyShard& shard, JobClai
 
 int Study(int argc, char** argv) {
   CLI::App app{
-      "Runs a study: the dataset, the VAEs, each PPO configuration times its training seeds and\n"
-      "the evaluations of STUDY.yaml (see studies/), up to --jobs programs at once, then writes\n"
-      "OUT/REPORT.md and OUT/summary.json. Jobs whose outputs exist are skipped, interrupted ones\n"
-      "continue from their checkpoints: rerun the same command after a stop or a failure.\n"
+      "Runs a study: the dataset, the VAEs, each PPO configuration times its training seeds, the\n"
+      "ensembles of its runs and the evaluations of STUDY.yaml (see studies/), up to --jobs\n"
+      "programs at once, then writes OUT/REPORT.md and OUT/summary.json. Jobs whose outputs\n"
+      "exist are skipped, interrupted ones continue from their checkpoints: rerun the same\n"
+      "command after a stop or a failure.\n"
       "Each job logs to OUT/logs/. Several ranks (mpirun, a Slurm array, or --shard on each\n"
       "machine) can share one study in one folder: they claim its jobs through OUT/claims/.\n"
       "Exit status: 0 done, 1 a job failed (its log is named), 2 bad input, 130 stopped by\n"
