@@ -134,8 +134,15 @@ nlohmann::json ToJson(const ScenarioSetReport& report) {
     for (const auto& [name, e] : row.metrics) {
       metrics[name] = {{"probability", e.probability}, {"low", e.ci.low}, {"high", e.ci.high}};
     }
+    const ProgressAtGoalSplit& split = row.progress_split;
     json["probability_of_improvement"].push_back(
-        {{"model", row.model}, {"over", row.over}, {"metrics", metrics}});
+        {{"model", row.model},
+         {"over", row.over},
+         {"metrics", metrics},
+         {"progress_split",
+          {{"both_at_goal_share", split.both_at_goal_share},
+           {"both_at_goal_probability", split.both_at_goal_probability},
+           {"elsewhere_probability", split.elsewhere_probability}}}});
   }
   json["ensemble_gains"] = nlohmann::json::array();
   for (const EnsembleGain& gain : report.ensemble_gains) {
@@ -185,12 +192,18 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
   if (report.improvements.empty()) return;
   md << "\nProbability of improvement: P(model better than the other on a random scenario and "
         "training seed; ties count half), with a 95 % bootstrap interval over seeds and "
-        "scenarios. Above 0.5 with the whole interval: better.\n\n"
-        "| model | over | progress | cte | collisions | return |\n|---|---|---|---|---|---|\n";
+        "scenarios. Above 0.5 with the whole interval: better. The progress comparison split: "
+        "P(more progress) where both reached the goal (and the share of such pairs), where "
+        "either did not.\n\n"
+        "| model | over | progress | cte | collisions | return | progress: both at goal (share) "
+        "/ elsewhere |\n|---|---|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
+    const ProgressAtGoalSplit& split = row.progress_split;
     md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
        << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
-       << Cell(row.metrics.at("collision")) << " | " << Cell(row.metrics.at("return")) << " |\n";
+       << Cell(row.metrics.at("collision")) << " | " << Cell(row.metrics.at("return"))
+       << fmt::format(" | {:.2f} ({:.0f} %) / {:.2f} |\n", split.both_at_goal_probability,
+                      100.0 * split.both_at_goal_share, split.elsewhere_probability);
   }
 }
 
@@ -405,7 +418,8 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
       if (other.first == model.name || !(is_reference || other.first.rfind("ref.", 0) == 0)) {
         continue;
       }
-      ImprovementSummary row{model.name, other.first, {}};
+      ImprovementSummary row{
+          model.name, other.first, {}, SplitProgressAtGoal(seeds.second, other.second)};
       for (const StudyMetric& metric : StudyMetrics()) {
         row.metrics[metric.name] = ProbabilityOfImprovementInterval(
             Scores(seeds.second, metric), Scores(other.second, metric), kBootstrapSeed);

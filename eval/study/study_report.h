@@ -14,6 +14,7 @@
 #include "eval/study/agent_among_seeds.h"
 #include "eval/study/ensemble_gain.h"
 #include "eval/study/outcome_breakdown.h"
+#include "eval/study/progress_at_goal.h"
 #include "eval/study/study_results.h"
 #include "src/seed_aggregates.h"
 
@@ -37,6 +38,7 @@ struct ImprovementSummary {
   std::string model;
   std::string over;
   std::map<std::string, ImprovementEstimate> metrics;
+  ProgressAtGoalSplit progress_split;  ///< where the progress comparison is decided
 };
 
 struct ScenarioSetReport {

@@ -92,6 +92,8 @@ for name, episodes in (("study", 6), ("paper", 4)):
     assert [(p["model"], p["over"]) for p in poi] == [("shallow_locked", "baseline"),
                                                       ("pair", "baseline")]
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
+    assert all(0 <= p["progress_split"][k] <= 1 for p in poi for k in
+               ("both_at_goal_share", "both_at_goal_probability", "elsewhere_probability")), poi
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
 assert s["ensembles"] == {"pair": {"members": ["shallow_locked", "baseline"], "count": 2}}
 # How each run ended: its seeds' wall-clock, final std and late training episodes.

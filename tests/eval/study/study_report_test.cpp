@@ -128,6 +128,27 @@ TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
   EXPECT_EQ(report.ensemble_gains[0].metrics.at("collision").count, 1U);
 }
 
+// Where both reach the goal the last step decides; elsewhere, the failures.
+TEST(StudyReportTest, TheProgressComparisonIsSplitWhereBothReachTheGoal) {
+  ModelEpisodes a = Episodes({98, 60, 99}, {10, 10, 10}, {0, 0, 0});
+  ModelEpisodes b = Episodes({99, 50, 99}, {10, 10, 10}, {0, 100, 0});
+  a["goal"] = {100, 0, 100};
+  b["goal"] = {100, 0, 100};
+  const ProgressAtGoalSplit split = SplitProgressAtGoal({&a}, {&b});
+  EXPECT_DOUBLE_EQ(split.both_at_goal_share, 2.0 / 3.0);
+  EXPECT_DOUBLE_EQ(split.both_at_goal_probability, 0.25);  // a loss and a tie
+  EXPECT_DOUBLE_EQ(split.elsewhere_probability, 1.0);
+  // Over seed pairs: a second seed of b that fails the first scenario moves it out of the goal
+  // part: 3 of 6 pairs at the goal (a loss and two ties), 3 elsewhere (a wins all).
+  ModelEpisodes b_failing = b;
+  b_failing["goal"] = {0, 0, 100};
+  b_failing["progress"] = {70, 50, 99};
+  const ProgressAtGoalSplit seeds = SplitProgressAtGoal({&a}, {&b, &b_failing});
+  EXPECT_DOUBLE_EQ(seeds.both_at_goal_share, 0.5);
+  EXPECT_DOUBLE_EQ(seeds.both_at_goal_probability, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(seeds.elsewhere_probability, 1.0);
+}
+
 // Over a kind's ensembles: ensemble k against the runs it holds, not against other runs.
 TEST(StudyReportTest, AnEnsembleIsComparedWithItsOwnMembers) {
   StudySpec spec;
