@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <initializer_list>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -188,6 +190,29 @@ void ModelTable(std::ostringstream& md, const ScenarioSetReport& report) {
         "percentile bootstrap for progress, Student-t otherwise.\n";
 }
 
+// "+1.4 [0.8, 2.0]", bold when the interval excludes 0; the difference alone for one ensemble.
+std::string Cell(const MeanConfidenceInterval& difference) {
+  if (difference.count < 2) return fmt::format("{:+.2f}", difference.mean);
+  const std::string cell =
+      fmt::format("{:+.2f} [{:.2f}, {:.2f}]", difference.mean, difference.low, difference.high);
+  return difference.low > 0.0 || difference.high < 0.0 ? "**" + cell + "**" : cell;
+}
+
+std::string Cell(const SeedPlacement& place) {
+  return fmt::format("{:.1f} {} [{:.1f}, {:.1f}], {} of {} better", place.value,
+                     place.inside ? "in" : "**out of**", place.prediction.low,
+                     place.prediction.high, place.seeds_better, place.seeds);
+}
+
+// " | a | b" for the metrics `names` of `metrics`, each through its Cell.
+template <typename Estimate>
+std::string MetricCells(const std::map<std::string, Estimate>& metrics,
+                        std::initializer_list<const char*> names) {
+  std::string cells;
+  for (const char* name : names) cells += " | " + Cell(metrics.at(name));
+  return cells;
+}
+
 void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
   if (report.improvements.empty()) return;
   md << "\nProbability of improvement: P(model better than the other on a random scenario and "
@@ -199,20 +224,11 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
         "/ elsewhere |\n|---|---|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
     const ProgressAtGoalSplit& split = row.progress_split;
-    md << "| " << row.model << " | " << row.over << " | " << Cell(row.metrics.at("progress"))
-       << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
-       << Cell(row.metrics.at("collision")) << " | " << Cell(row.metrics.at("return"))
+    md << "| " << row.model << " | " << row.over
+       << MetricCells(row.metrics, {"progress", "cross_track_error", "collision", "return"})
        << fmt::format(" | {:.2f} ({:.0f} %) / {:.2f} |\n", split.both_at_goal_probability,
                       100.0 * split.both_at_goal_share, split.elsewhere_probability);
   }
-}
-
-// "+1.4 [0.8, 2.0]", bold when the interval excludes 0; the difference alone for one ensemble.
-std::string Cell(const MeanConfidenceInterval& difference) {
-  if (difference.count < 2) return fmt::format("{:+.2f}", difference.mean);
-  const std::string cell =
-      fmt::format("{:+.2f} [{:.2f}, {:.2f}]", difference.mean, difference.low, difference.high);
-  return difference.low > 0.0 || difference.high < 0.0 ? "**" + cell + "**" : cell;
 }
 
 void EnsembleGainTable(std::ostringstream& md, const ScenarioSetReport& report) {
@@ -223,17 +239,11 @@ void EnsembleGainTable(std::ostringstream& md, const ScenarioSetReport& report) 
         "| ensemble | progress | cte m | collisions | time-outs | return |\n"
         "|---|---|---|---|---|---|\n";
   for (const EnsembleGain& gain : report.ensemble_gains) {
-    md << "| " << gain.ensemble << " | " << Cell(gain.metrics.at("progress")) << " | "
-       << Cell(gain.metrics.at("cross_track_error")) << " | " << Cell(gain.metrics.at("collision"))
-       << " | " << Cell(gain.metrics.at("time_out")) << " | " << Cell(gain.metrics.at("return"))
+    md << "| " << gain.ensemble
+       << MetricCells(gain.metrics,
+                      {"progress", "cross_track_error", "collision", "time_out", "return"})
        << " |\n";
   }
-}
-
-std::string Cell(const SeedPlacement& place) {
-  return fmt::format("{:.1f} {} [{:.1f}, {:.1f}], {} of {} better", place.value,
-                     place.inside ? "in" : "**out of**", place.prediction.low,
-                     place.prediction.high, place.seeds_better, place.seeds);
 }
 
 void AgentsAmongSeedsTable(std::ostringstream& md, const ScenarioSetReport& report) {
@@ -246,9 +256,8 @@ void AgentsAmongSeedsTable(std::ostringstream& md, const ScenarioSetReport& repo
         "recipe.\n\n"
         "| configuration | agent | progress % | cte m | collisions % |\n|---|---|---|---|---|\n";
   for (const AgentAmongSeeds& row : report.agents_among_seeds) {
-    md << "| " << row.config << " | " << row.agent << " | " << Cell(row.metrics.at("progress"))
-       << " | " << Cell(row.metrics.at("cross_track_error")) << " | "
-       << Cell(row.metrics.at("collision")) << " |\n";
+    md << "| " << row.config << " | " << row.agent
+       << MetricCells(row.metrics, {"progress", "cross_track_error", "collision"}) << " |\n";
   }
 }
 
