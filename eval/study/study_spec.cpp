@@ -100,7 +100,8 @@ class Reader {
   }
 
   // A mapping of program configuration keys to values, kept as "key=value" overrides; the
-  // program checks the keys and values (before the study starts: see ValidateJobs).
+  // program checks the keys and values (before the study starts: CheckJobConfigurations,
+  // job_runner.h).
   Overrides OverridesOf(const YAML::Node& node, const std::string& key) const {
     Overrides overrides;
     if (!node) return overrides;
