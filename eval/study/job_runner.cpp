@@ -398,8 +398,9 @@ class Scheduler {
 
 }  // namespace
 
-void CheckJobConfigurations(const std::vector<StudyJob>& jobs,
-                            const std::filesystem::path& program_dir) {
+std::map<std::string, std::string> CheckJobConfigurations(
+    const std::vector<StudyJob>& jobs, const std::filesystem::path& program_dir) {
+  std::map<std::string, std::string> configurations;
   for (const StudyJob& job : jobs) {
     if (!job.check_configuration || Complete(job)) continue;
     std::vector<std::string> args = job.args;
@@ -412,7 +413,9 @@ void CheckJobConfigurations(const std::vector<StudyJob>& jobs,
       throw UserError("job " + job.id + ": " + job.program + ": " +
                       message.substr(0, message.find('\n')));
     }
+    configurations[job.id] = output;
   }
+  return configurations;
 }
 
 JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions& options) {

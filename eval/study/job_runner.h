@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <vector>
 
 #include "eval/study/job_graph.h"
@@ -41,9 +42,10 @@ struct JobRunSummary {
 
 /// Asks each job's program to resolve its configuration (--print-config) before anything runs,
 /// so that a bad key or value in the study fails at once: a UserError naming the job and the
-/// program's own one-line message.
-void CheckJobConfigurations(const std::vector<StudyJob>& jobs,
-                            const std::filesystem::path& program_dir);
+/// program's own one-line message. Returns each checked job's resolved configuration (YAML) by
+/// job id.
+std::map<std::string, std::string> CheckJobConfigurations(const std::vector<StudyJob>& jobs,
+                                                          const std::filesystem::path& program_dir);
 
 /// Runs `jobs` (dependencies before dependants) until every job is complete or failed, here or on
 /// another rank. SIGINT or SIGTERM stops launching jobs and asks the running ones to stop cleanly

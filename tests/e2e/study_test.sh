@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# The study runner end to end with the real programs at a tiny budget: a bad program key is
-# refused before any work; 2 PPO configurations x 2 seeds (one with a VAE) and 2 ensembles of one
-# run of each run to a report; a
+# The study runner end to end with the real programs at a tiny budget: a bad program key and an
+# ensemble of runs that would observe differently are refused before any work; 2 PPO
+# configurations x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report; a
 # second invocation skips every job; a study stopped by SIGTERM during a PPO run exits 130 and the
 # same command then finishes it.
 #   study_test.sh BIN_DIR WORK_DIR
@@ -38,6 +38,23 @@ status=0
 [ "$(wc -l <"$WORK/bad.err")" -eq 1 ] && grep -q "job ppo/shallow_locked/seed_0: train_ppo: .*ppo.n_env" \
   "$WORK/bad.err" || { cat "$WORK/bad.err"; fail "bad key message"; }
 [ ! -e "$WORK/bad/data" ] || fail "a job ran before the study was checked"
+
+# So is an ensemble of runs that would observe differently (ensemble_policy refuses them).
+cat >"$WORK/mixed.yaml" <<'YAML'
+ppo:
+  seeds: 1
+  steps: 2048
+  configs:
+    log: {extractor: baseline}
+    linear: {extractor: baseline, set: {env.closeness: linear}}
+ensembles:
+  pair: {members: [log, linear]}
+YAML
+status=0
+"$BIN/study" "$WORK/mixed.yaml" --out "$WORK/mixed" 2>"$WORK/mixed.err" >/dev/null || status=$?
+[ $status -eq 2 ] && grep -q "ensembles.pair: the runs of log .* observe differently" \
+  "$WORK/mixed.err" || { cat "$WORK/mixed.err"; fail "an ensemble of mixed observations"; }
+[ ! -e "$WORK/mixed/data" ] || fail "a job ran before the ensemble was checked"
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
   { tail -20 "$WORK/first.err"; fail "first run failed"; }

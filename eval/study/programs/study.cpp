@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/ensemble_observations.h"
 #include "eval/study/job_claims.h"
 #include "eval/study/job_graph.h"
 #include "eval/study/job_runner.h"
@@ -111,7 +112,8 @@ int Study(int argc, char** argv) {
     SayShard(shard);
     const std::vector<StudyJob> graph = BuildJobGraph(spec, folder);
     if (!AllJobsComplete(graph)) claims.ForgetReportWriting();
-    CheckJobConfigurations(graph, ProgramFolder());
+    CheckEnsembleObservationSettings(spec, study_file, folder,
+                                     CheckJobConfigurations(graph, ProgramFolder()));
     summary = RunJobs(graph, {jobs, ProgramFolder(), folder / "logs", folder / "claims",
                               std::chrono::seconds(claim_timeout_s), shard.index});
     std::fprintf(stderr,
