@@ -128,9 +128,10 @@ std::string RecurrentSource(ActorCriticImpl& model) {
            "_cell(x, state)\n"
            "    f = torch.cat([x, s], 1)\n";
   };
-  const std::string value_cell = model.critic_recurrent() ? "critic_recurrent" : "recurrent";
+  const bool critic_memory = static_cast<bool>(model.critic_recurrent());
+  const std::string value_cell = critic_memory ? "critic_recurrent" : "recurrent";
   return RecurrentCellSource(H, "recurrent") +
-         (model.critic_recurrent() ? RecurrentCellSource(H, value_cell) : std::string()) +
+         (critic_memory ? RecurrentCellSource(H, "critic_recurrent") : std::string()) +
          // The parameters' float32 (torch.float32 does not compile outside Python).
          "def initial_state(self, batch: int) -> Tensor:\n"
          "    return self.recurrent_bias_hh.new_zeros([batch, " +

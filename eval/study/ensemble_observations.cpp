@@ -2,10 +2,9 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <fstream>
 #include <optional>
-#include <sstream>
 
+#include "eval/study/job_graph.h"
 #include "src/error.h"
 
 namespace colav {
@@ -27,21 +26,15 @@ std::string ObservationKeys(const YAML::Node& config) {
 std::optional<std::string> RunObservationKeys(const std::string& config,
                                               const std::filesystem::path& out,
                                               const std::map<std::string, std::string>& printed) {
-  const std::string first_run = "ppo/" + config + "/seed_0";
-  std::string text;
-  if (const auto resolved = printed.find(first_run); resolved != printed.end()) {
-    text = resolved->second;
-  } else if (std::ifstream file(out / first_run / "config.yaml"); file) {
-    std::ostringstream contents;
-    contents << file.rdbuf();
-    text = contents.str();
-  } else {
-    return std::nullopt;
-  }
+  const std::filesystem::path first_run = RunFolder(config, 0);
+  const auto resolved = printed.find(first_run.string());
+  const std::filesystem::path trained = out / first_run / "config.yaml";
+  if (resolved == printed.end() && !std::filesystem::exists(trained)) return std::nullopt;
   try {
-    return ObservationKeys(YAML::Load(text));
+    return ObservationKeys(resolved != printed.end() ? YAML::Load(resolved->second)
+                                                     : YAML::LoadFile(trained.string()));
   } catch (const YAML::Exception&) {
-    return std::nullopt;  // not train_ppo's configuration: nothing to compare
+    return std::nullopt;  // unreadable, or not train_ppo's configuration: nothing to compare
   }
 }
 

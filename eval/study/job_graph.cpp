@@ -21,7 +21,7 @@ constexpr double kEnsembleSeconds = 2.0;
 // The policy file of training seed `seed` of `config`.
 std::filesystem::path RunPolicy(const std::filesystem::path& out, const std::string& config,
                                 int seed) {
-  return out / "ppo" / config / ("seed_" + std::to_string(seed)) / "policy.pt";
+  return out / RunFolder(config, seed) / "policy.pt";
 }
 
 // The policy file of ensemble `k` of the kind `ensemble`.
@@ -140,6 +140,10 @@ std::filesystem::path TrainingFigurePath(const std::string& config) {
   return std::filesystem::path("figures") / ("training_" + config + ".png");
 }
 
+std::filesystem::path RunFolder(const std::string& config, int seed) {
+  return std::filesystem::path("ppo") / config / ("seed_" + std::to_string(seed));
+}
+
 std::string SeedModelName(const std::string& config, int seed) {
   return config + ".seed_" + std::to_string(seed);
 }
@@ -185,7 +189,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   std::map<std::string, std::size_t> policy_jobs;  // policy.pt path -> the job that writes it
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const std::string id = "ppo/" + config.name + "/seed_" + std::to_string(k);
+      const std::string id = RunFolder(config.name, k).string();
       const std::filesystem::path dir = out / id;
       StudyJob job =
           NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",

@@ -52,6 +52,9 @@ std::filesystem::path VaeFiguresFolder();
 /// study's output folder.
 std::filesystem::path TrainingFigurePath(const std::string& config);
 
+/// "ppo/<config>/seed_<k>": a PPO run's folder under the study folder, and its job's id.
+std::filesystem::path RunFolder(const std::string& config, int seed);
+
 /// "<config>.seed_<k>": the model name of a PPO run in evaluations.
 std::string SeedModelName(const std::string& config, int seed);
 

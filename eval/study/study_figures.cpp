@@ -39,10 +39,12 @@ std::optional<SeededModel> FindSeeded(const StudySpec& spec, const std::string& 
 
 // The mean of `metric` of each seed of the configuration or ensemble kind `name` (in the
 // report's unit).
-std::vector<double> SeedMeans(const StudySpec& spec, const ScenarioSetResults& results,
+std::vector<double> SeedMeans(const ScenarioSetReport& report, const ScenarioSetResults& results,
                               const std::string& name, const std::string& metric) {
+  const int seeds = Summary(report, name).seeds;
   std::vector<double> means;
-  for (int k = 0; k < FindSeeded(spec, name)->seeds; ++k) {
+  means.reserve(static_cast<std::size_t>(seeds));
+  for (int k = 0; k < seeds; ++k) {
     means.push_back(Mean(results.models.at(SeedModelName(name, k)).at(metric)));
   }
   return means;
@@ -109,7 +111,7 @@ void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
   for (const char* metric : kFigureMetrics) {
     std::ostringstream seeds;
     for (const std::string& config : ours) {
-      for (const double mean : SeedMeans(spec, results, config, metric)) {
+      for (const double mean : SeedMeans(report, results, config, metric)) {
         seeds << mean << ' ' << row.at(config) << '\n';
       }
     }
@@ -191,8 +193,7 @@ std::vector<std::pair<double, std::string>> BetaSweep(const StudySpec& spec) {
   return sweep;
 }
 
-void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& results,
-                         const ScenarioSetReport& report,
+void DrawBetaSweepFigure(const ScenarioSetResults& results, const ScenarioSetReport& report,
                          const std::vector<std::pair<double, std::string>>& sweep,
                          const std::filesystem::path& png) {
   std::ostringstream script;
@@ -208,7 +209,7 @@ void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& result
     for (const auto& [beta, config] : sweep) {
       const MetricEstimate& e = Summary(report, config).metrics.at(metric);
       estimates << beta << ' ' << e.mean << ' ' << e.ci.low << ' ' << e.ci.high << '\n';
-      for (const double mean : SeedMeans(spec, results, config, metric)) {
+      for (const double mean : SeedMeans(report, results, config, metric)) {
         seeds << beta << ' ' << mean << '\n';
       }
     }

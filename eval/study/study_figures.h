@@ -32,8 +32,7 @@ void DrawTradeOffFigure(const StudySpec& spec, const ScenarioSetReport& report,
 std::vector<std::pair<double, std::string>> BetaSweep(const StudySpec& spec);
 
 /// Each metric's estimate with its interval and the seed means against the VAE's beta.
-void DrawBetaSweepFigure(const StudySpec& spec, const ScenarioSetResults& results,
-                         const ScenarioSetReport& report,
+void DrawBetaSweepFigure(const ScenarioSetResults& results, const ScenarioSetReport& report,
                          const std::vector<std::pair<double, std::string>>& sweep,
                          const std::filesystem::path& png);
 

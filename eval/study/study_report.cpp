@@ -325,7 +325,7 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
   const auto sweep = BetaSweep(spec);
   if (set != "study" || sweep.empty()) return;
   const std::string beta = "figures/beta_sweep.png";
-  DrawBetaSweepFigure(spec, results, report, sweep, out / beta);
+  DrawBetaSweepFigure(results, report, sweep, out / beta);
   md << "\n![the beta sweep](" << beta << ")\n";
 }
 
@@ -342,8 +342,7 @@ void RunsTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& sp
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     std::vector<std::string> walls, stds, collisions, time_outs;
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const RunDiagnostics run =
-          ReadRunDiagnostics(out / "ppo" / config.name / ("seed_" + std::to_string(k)));
+      const RunDiagnostics run = ReadRunDiagnostics(out / RunFolder(config.name, k));
       walls.push_back(fmt::format("{:.0f}", run.wall_s));
       stds.push_back(fmt::format("{:.3g}", run.final_std));
       collisions.push_back(fmt::format("{:.1f}", run.late_collisions));

@@ -21,8 +21,12 @@ std::string Resolved(const std::string& closeness, int history, int interval = 5
 
 StudySpec EnsembleOf(const std::vector<std::string>& members) {
   StudySpec spec;
-  for (const std::string& member : members) spec.ppo_configs.push_back({member});
-  spec.ensembles = {{"pair", members, 1}};
+  for (const std::string& member : members) {
+    PpoConfigSpec config;
+    config.name = member;
+    spec.ppo_configs.push_back(config);
+  }
+  spec.ensembles = {{"pair", members, 1, std::nullopt}};
   return spec;
 }
 

@@ -94,7 +94,7 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
 TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);
-  spec.ensembles = {{"mix", {"locked", "baseline", "locked"}, 1}};
+  spec.ensembles = {{"mix", {"locked", "baseline", "locked"}, 1, std::nullopt}};
   const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
   const StudyJob& ensemble = Find(jobs, "ensembles/mix/seed_0");
   EXPECT_EQ(ensemble.program, "ensemble_policy");

@@ -121,7 +121,7 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_EQ(pair.near_within_m, 30.5);
   EXPECT_EQ(pair.MemberSeed(0, 1), 1);
   EXPECT_EQ(pair.MaxCount(3), 3);
-  EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5};
+  EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5, std::nullopt};
   EXPECT_EQ(quad.MemberSeed(2, 3), 8);  // a's seeds 3 and 8, b's 3 and 8 in ensemble 3
   EXPECT_EQ(quad.MemberSeed(3, 3), 8);
   EXPECT_EQ(quad.MaxCount(10), 5);
