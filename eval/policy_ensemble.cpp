@@ -17,6 +17,13 @@ namespace {
 
 std::string MemberName(std::size_t index) { return "member_" + std::to_string(index); }
 
+// Where the stall rule reads the vessel's pace in an observation (env/environment_spec.h: [u, v,
+// r, cte/100, heading error, look-ahead heading error, scans]).
+constexpr int kSurgeSpeedIndex = 0;
+constexpr int kHeadingErrorIndex = 4;
+// The stall rule's columns of the state, after the members': the pace average, then 1 once stalled.
+constexpr int kStallColumns = 2;
+
 // TorchScript statements that give every member's clipped action, action_<i>, and every recurrent
 // member's next state, state_<i>, from its own columns of `state`; and the recurrent members'
 // initial states.
@@ -48,16 +55,34 @@ MemberSource MembersSource(const std::vector<Policy>& members) {
   return source;
 }
 
-// The expression of the ensemble's action from the members' clipped actions.
+// The expression of the ensemble's action from the members' clipped actions, before a stall.
 std::string CombinedActionSource(const std::vector<std::string>& actions, const EnsembleRule& rule,
                                  const ObservationSettings& settings) {
   if (!rule.near_within_m) {
+    if (rule.stall) return actions[0];
     return fmt::format("torch.stack([{}]).mean(0)", fmt::join(actions, ", "));
   }
   // Closeness falls as the range grows: a ray at most near_within_m away reads at least this.
   const double near = Closeness(*rule.near_within_m, settings.closeness);
   return fmt::format("torch.where(obs[:, {}:{}].max(1, keepdim=True)[0] >= {:.17g}, {}, {})",
                      kNavigationSize, kNavigationSize + kNumRays, near, actions[0], actions[1]);
+}
+
+// Adds to `source` the statements that keep the stall rule's columns of the state, from `column`
+// on, and returns `action` with the second member's action once the vessel has stalled.
+std::string AddStallSource(const StallRule& stall, int column, const std::string& action,
+                           MemberSource& source) {
+  const double keep = 1.0 - 1.0 / static_cast<double>(stall.steps);
+  source.body += fmt::format(
+      "    pace = {0:.17g} * state[:, {2}:{3}] + {1:.17g} * (obs[:, {5}:{6}] * "
+      "torch.cos(obs[:, {7}:{8}]))\n"
+      "    stalled = (state[:, {3}:{4}] > 0.5) | (pace < {9:.17g})\n",
+      keep, 1.0 - keep, column, column + 1, column + 2, kSurgeSpeedIndex, kSurgeSpeedIndex + 1,
+      kHeadingErrorIndex, kHeadingErrorIndex + 1, stall.pace_mps);
+  source.initial_states.push_back(
+      fmt::format("torch.tensor([{:.17g}, 0.0]).repeat(batch, 1)", kStallPaceStartMps));
+  source.next_states.insert(source.next_states.end(), {"pace", "stalled.float()"});
+  return fmt::format("torch.where(stalled, {}, {})", source.actions[1], action);
 }
 
 std::string MemorylessSource(const MemberSource& source, const std::string& action) {
@@ -105,16 +130,32 @@ ObservationSettings CommonSettings(const std::vector<Policy>& members) {
 
 void CheckEnsemble(std::size_t members, const EnsembleRule& rule) {
   if (members < 2) throw UserError("an ensemble needs at least two policies");
-  if (!rule.near_within_m) return;
-  if (members != 2) {
-    throw UserError(
-        fmt::format("--near-within: takes exactly two policies (the one near "
-                    "obstacles, the other), got {}",
-                    members));
+  if (rule.near_within_m) {
+    if (members != 2) {
+      throw UserError(
+          fmt::format("--near-within: takes exactly two policies (the one near "
+                      "obstacles, the other), got {}",
+                      members));
+    }
+    if (!(*rule.near_within_m > 0.0 && *rule.near_within_m < RangeFinder::kRange)) {
+      throw UserError(fmt::format("--near-within {}: expects metres in (0, {})",
+                                  *rule.near_within_m, RangeFinder::kRange));
+    }
   }
-  if (!(*rule.near_within_m > 0.0 && *rule.near_within_m < RangeFinder::kRange)) {
-    throw UserError(fmt::format("--near-within {}: expects metres in (0, {})", *rule.near_within_m,
-                                RangeFinder::kRange));
+  if (rule.stall) {
+    if (members != 2) {
+      throw UserError(
+          fmt::format("--stall-pace: takes exactly two policies (the one that steers first, the "
+                      "relief), got {}",
+                      members));
+    }
+    if (!(rule.stall->pace_mps > 0.0 && rule.stall->pace_mps < kStallPaceStartMps)) {
+      throw UserError(fmt::format("--stall-pace {}: expects m/s in (0, {})", rule.stall->pace_mps,
+                                  kStallPaceStartMps));
+    }
+    if (rule.stall->steps < 1) {
+      throw UserError(fmt::format("--stall-steps {}: expects at least 1", rule.stall->steps));
+    }
   }
 }
 
@@ -131,8 +172,12 @@ torch::jit::Module EnsemblePolicy(const std::vector<Policy>& members, const Ense
   }
   RecordObservationSettings(ensemble, settings);
   ensemble.register_attribute("member_paths", c10::StringType::get(), paths);
-  const MemberSource source = MembersSource(members);
-  const std::string action = CombinedActionSource(source.actions, rule, settings);
+  MemberSource source = MembersSource(members);
+  std::string action = CombinedActionSource(source.actions, rule, settings);
+  if (rule.stall) {
+    action = AddStallSource(*rule.stall, state_size, action, source);
+    state_size += kStallColumns;
+  }
   if (state_size > 0) {
     ensemble.register_attribute("recurrent_size", c10::IntType::get(), state_size);
     ensemble.define(RecurrentSource(source, action, state_size));

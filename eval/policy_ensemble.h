@@ -4,17 +4,18 @@
 // actions keeps what most of them do. Agents of different recipes are good at different things:
 // one keeps clear of obstacles, another keeps to the path (README, "Two helmsmen"). The members
 // may be memoryless or recurrent, and of different recipes, but must share their observation
-// settings (recorded in the file or its sidecar, eval/policy.h).
+// settings (recorded in the file or its sidecar, eval/policy.h). A stall rule
+// (eval/stall_rule.h) hands the helm to the second of two members for the rest of the episode.
 //
 // The ensemble has the interface of a trained policy.pt (models/policy_export.h), so evaluate,
 // study and colav.Policy run it:
 //   only memoryless members: forward(obs) -> the members' actions, each clipped to [-1, 1] as
 //                            evaluate clips it, combined by the EnsembleRule;
-//   a recurrent member:      recurrent_size (the members' state sizes summed), initial_state(B)
-//                            (the recurrent members' initial states side by side, in their order)
-//                            and step(obs, state) -> (action, next state), each recurrent
-//                            member stepping its own slice of the state; forward(obs) fails as a
-//                            recurrent policy's does.
+//   a recurrent member or    recurrent_size (the members' state sizes summed, plus the stall
+//   a stall rule:            rule's two columns last), initial_state(B) (the recurrent members'
+//                            initial states side by side, in their order) and step(obs, state)
+//                            -> (action, next state), each recurrent member stepping its own
+//                            slice of the state; forward(obs) fails as a recurrent policy's does.
 // Every member acts at every step, whichever action the rule keeps, so a memory sees every
 // observation.
 // Attributes: observation_settings (the members'), member_paths (their paths, one per line). The
@@ -29,6 +30,7 @@
 #include <vector>
 
 #include "eval/policy.h"
+#include "eval/stall_rule.h"
 
 namespace colav {
 
@@ -37,6 +39,9 @@ struct EnsembleRule {
   /// Absent: their mean. Present (two members only): the first member's action while the newest
   /// scan's nearest return lies within this many metres (0 < m < 150), the second's otherwise.
   std::optional<double> near_within_m;
+  /// Present (two members only): the second member steers from the step the vessel stalls on to
+  /// the end of the episode; before that, the first (or, with near_within_m, the range rule).
+  std::optional<StallRule> stall;
 };
 
 /// A UserError unless `members` policies can form an ensemble under `rule`.

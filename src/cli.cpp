@@ -20,7 +20,11 @@ std::string& CurrentProgramName() {
   return name;
 }
 
-std::string FirstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+// The first line that says something: TorchScript's compilation errors start with a line break.
+std::string FirstLine(const std::string& text) {
+  const std::size_t start = std::min(text.find_first_not_of('\n'), text.size());
+  return text.substr(start, text.find('\n', start) - start);
+}
 
 // What a flag's value looks like in --help.
 std::string TypeNameOf(const ConfigSchema::Entry& entry) {

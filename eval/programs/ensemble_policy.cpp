@@ -22,7 +22,10 @@ int EnsemblePolicyProgram(int argc, char** argv) {
       "recurrent, sharing their observation settings. The output has a trained policy.pt's\n"
       "interface, so evaluate, study and colav.Policy run it; with a recurrent member it is\n"
       "recurrent, each member stepping its own slice of the state. With --near-within M, two\n"
-      "members: the first steers while an obstacle is within M metres, the second otherwise."};
+      "members: the first steers while an obstacle is within M metres, the second otherwise.\n"
+      "With --stall-pace P, two members: the second steers from the step the vessel stalls (its\n"
+      "pace towards the look-ahead point, averaged over --stall-steps, falls below P m/s) to the\n"
+      "end of the episode."};
   std::vector<std::string> members;
   std::string out;
   double near_within_m = 0.0;
@@ -34,6 +37,16 @@ int EnsemblePolicyProgram(int argc, char** argv) {
       "metres: the first of two members steers while the newest scan's nearest return is this "
       "close, the second otherwise (default: the mean of every member's action)",
       0.0, RangeFinder::kRange);
+  StallRule stall;
+  CLI::Option* stall_pace = AddNumberFlag<double>(
+      app, "--stall-pace", stall.pace_mps,
+      "m/s: the second of two members steers for the rest of the episode once the vessel's pace "
+      "towards the look-ahead point, u cos(heading error), averaged over --stall-steps, falls "
+      "below this (default: no stall rule)",
+      0.0, kStallPaceStartMps);
+  AddNumberFlag<int>(app, "--stall-steps", stall.steps,
+                     "steps the stall rule's pace is averaged over (exponentially)", 1, 100000)
+      ->needs(stall_pace);
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);
   config_flags.Resolve();
@@ -41,6 +54,7 @@ int EnsemblePolicyProgram(int argc, char** argv) {
   const std::vector<std::filesystem::path> paths(members.begin(), members.end());
   EnsembleRule rule;
   if (near_within->count() > 0) rule.near_within_m = near_within_m;
+  if (stall_pace->count() > 0) rule.stall = stall;
   WriteEnsemblePolicy(paths, out, rule);
   std::cout << "ensemble_policy: " << out << ": " << members.size() << " members\n";
   return 0;

@@ -115,6 +115,11 @@ void AddEnsembleJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
         job.args.insert(job.args.end(),
                         {"--near-within", fmt::format("{}", *ensemble.near_within_m)});
       }
+      if (ensemble.stall) {
+        job.args.insert(job.args.end(),
+                        {"--stall-pace", fmt::format("{}", ensemble.stall->pace_mps),
+                         "--stall-steps", std::to_string(ensemble.stall->steps)});
+      }
       for (std::size_t i = 0; i < ensemble.members.size(); ++i) {
         const std::filesystem::path member =
             RunPolicy(out, ensemble.members[i], ensemble.MemberSeed(i, k));

@@ -381,6 +381,21 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// How a kind's members share the helm, after its member list ("" for the mean of their actions).
+std::string EnsembleRuleText(const EnsembleSpec& ensemble) {
+  const std::string stall =
+      ensemble.stall ? fmt::format(
+                           "for the rest of the episode once the vessel's pace towards the "
+                           "look-ahead point, averaged over {} steps, falls below {} m/s",
+                           ensemble.stall->steps, ensemble.stall->pace_mps)
+                     : "";
+  if (ensemble.near_within_m) {
+    return fmt::format(", the first steering within {} m of an obstacle, the second otherwise{}",
+                       *ensemble.near_within_m, stall.empty() ? "" : " and " + stall);
+  }
+  return stall.empty() ? "" : ", the first steering, the second " + stall;
+}
+
 // The ensemble kinds and the runs they average, into the report's head and summary.json.
 void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
   if (spec.ensembles.empty()) return;
@@ -389,15 +404,15 @@ void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySp
         "of a kind of count n takes seed k + j n of a configuration listed for the j-th time "
         "(j = 0, 1, ...), so the n ensembles share no run:\n\n";
   for (const EnsembleSpec& ensemble : spec.ensembles) {
-    md << fmt::format(
-        "- {}: {} of [{}]{}\n", ensemble.name, ensemble.count, fmt::join(ensemble.members, ", "),
-        ensemble.near_within_m ? fmt::format(", the first steering within {} m of an obstacle, the "
-                                             "second otherwise",
-                                             *ensemble.near_within_m)
-                               : "");
+    md << fmt::format("- {}: {} of [{}]{}\n", ensemble.name, ensemble.count,
+                      fmt::join(ensemble.members, ", "), EnsembleRuleText(ensemble));
     json["ensembles"][ensemble.name] = {{"members", ensemble.members}, {"count", ensemble.count}};
     if (ensemble.near_within_m) {
       json["ensembles"][ensemble.name]["near_within_m"] = *ensemble.near_within_m;
+    }
+    if (ensemble.stall) {
+      json["ensembles"][ensemble.name]["stall_pace_mps"] = ensemble.stall->pace_mps;
+      json["ensembles"][ensemble.name]["stall_steps"] = ensemble.stall->steps;
     }
   }
 }

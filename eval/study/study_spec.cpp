@@ -206,7 +206,8 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
                        [&](const PpoConfigSpec& c) { return c.name == config; });
   };
   if (is_config(ensemble.name)) reader.Fail(key, "is also the name of a PPO configuration");
-  reader.RequireMap(node, key, {"members", "count", "near_within_m"});
+  reader.RequireMap(node, key,
+                    {"members", "count", "near_within_m", "stall_pace_mps", "stall_steps"});
   const YAML::Node members = node["members"];
   if (!members || !members.IsSequence() || members.size() < 2) {
     reader.Fail(key + ".members", "expects a list of two or more PPO configurations");
@@ -232,6 +233,22 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
     }
     ensemble.near_within_m =
         reader.Number(node["near_within_m"], key + ".near_within_m", 0.0, kSensorRangeM);
+  }
+  if (node["stall_pace_mps"]) {
+    if (ensemble.members.size() != 2) {
+      reader.Fail(key + ".stall_pace_mps",
+                  "takes exactly two members (the one that steers first, the relief)");
+    }
+    StallRule stall;
+    stall.pace_mps =
+        reader.Number(node["stall_pace_mps"], key + ".stall_pace_mps", 0.0, kStallPaceStartMps);
+    if (node["stall_steps"]) {
+      stall.steps =
+          static_cast<int>(reader.Integer(node["stall_steps"], key + ".stall_steps", 1, 100000));
+    }
+    ensemble.stall = stall;
+  } else if (node["stall_steps"]) {
+    reader.Fail(key + ".stall_steps", "needs stall_pace_mps");
   }
   ensemble.count = most;
   if (node["count"]) {

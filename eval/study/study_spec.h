@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+#include "eval/stall_rule.h"
+
 namespace colav {
 
 /// "key=value" overrides passed to a program with --set, in file order.
@@ -68,6 +70,8 @@ struct EnsembleSpec {
   /// Two members only: the first steers while an obstacle is within this many metres, the second
   /// otherwise (EnsembleRule, eval/policy_ensemble.h); absent: the mean of every member's action.
   std::optional<double> near_within_m;
+  /// Two members only: the second steers for the rest of the episode once the vessel stalls.
+  std::optional<StallRule> stall;
 
   /// The training seed of member `member` (an index into members) in ensemble `k`.
   int MemberSeed(std::size_t member, int k) const;

@@ -97,7 +97,7 @@ TEST(EnsemblePolicy, TheFirstOfTwoSteersNearObstaclesAndBothMemoriesStep) {
   const TemporaryFolder folder;
   WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, -0.5"), folder / "near.pt"),
                        SaveMember(CountingPolicy(), folder / "far.pt")},
-                      folder / "ensemble.pt", {30.0});
+                      folder / "ensemble.pt", {30.0, std::nullopt});
   Policy ensemble(folder / "ensemble.pt", "ensemble");
   Policy far(folder / "far.pt", "far");
   torch::Tensor states = ensemble.InitialStates(3);
@@ -112,13 +112,83 @@ TEST(EnsemblePolicy, TheFirstOfTwoSteersNearObstaclesAndBothMemoriesStep) {
   }
 }
 
+// Observations [3, 186] of a vessel at surge speeds `u` (m/s) and heading errors `heading_error`
+// (rad), one per row, with no obstacle in range.
+torch::Tensor ObservationsUnderWay(const std::vector<float>& u,
+                                   const std::vector<float>& heading_error) {
+  torch::Tensor obs = torch::zeros({static_cast<std::int64_t>(u.size()), kObservationSize});
+  obs.select(1, 0) = torch::tensor(u);
+  obs.select(1, 4) = torch::tensor(heading_error);
+  return obs;
+}
+
+TEST(EnsemblePolicy, TheSecondOfTwoSteersFromTheStepTheVesselStallsOn) {
+  const TemporaryFolder folder;
+  // Pace averaged over 2 steps: pace' = pace / 2 + u cos(heading error) / 2, from 0.5 m/s.
+  WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, 0.0"), folder / "first.pt"),
+                       SaveMember(ConstantPolicy("-1.0, 0.5"), folder / "relief.pt")},
+                      folder / "ensemble.pt", {std::nullopt, StallRule{0.3, 2}});
+  Policy ensemble(folder / "ensemble.pt", "ensemble");
+  ASSERT_EQ(ensemble.recurrent_size(), 2);  // memoryless members: the rule's columns alone
+  torch::Tensor states = ensemble.InitialStates(3);
+  EXPECT_TRUE(torch::equal(states, torch::tensor({0.5F, 0.0F}).repeat({3, 1})));
+  const torch::Tensor first = torch::tensor({1.0F, 0.0F});
+  const torch::Tensor relief = torch::tensor({-1.0F, 0.5F});
+  // Row 0 cruises (pace 0.5); row 1 runs away from the look-ahead point at 1 m/s (pace -0.25 at
+  // once); row 2 slows to 0.2 m/s (pace 0.35, then 0.275 < 0.3), then speeds up again (0.3875),
+  // but the relief keeps the helm for the rest of the episode.
+  const std::vector<std::vector<torch::Tensor>> expected = {
+      {first, first, first}, {relief, relief, relief}, {first, relief, relief}};
+  const std::vector<float> heading_errors = {0.0F, 3.14159265F, 0.0F};
+  const std::vector<std::vector<float>> speeds = {
+      {0.5F, 1.0F, 0.2F}, {0.5F, 1.0F, 0.2F}, {0.5F, 1.0F, 0.5F}};
+  for (int step = 0; step < 3; ++step) {
+    const torch::Tensor actions =
+        ensemble.Step(ObservationsUnderWay(speeds[step], heading_errors), states);
+    for (int row = 0; row < 3; ++row) {
+      EXPECT_TRUE(torch::equal(actions[row], expected[row][step]))
+          << "row " << row << " step " << step;
+    }
+  }
+  EXPECT_NEAR(states[2][0].item<float>(), 0.3875F, 1e-6F);
+}
+
+TEST(EnsemblePolicy, TheSecondKeepsTheHelmNearObstaclesOnceStalled) {
+  const TemporaryFolder folder;
+  WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, 0.0"), folder / "near.pt"),
+                       SaveMember(ConstantPolicy("-1.0, 0.5"), folder / "far.pt")},
+                      folder / "ensemble.pt", {30.0, StallRule{0.3, 2}});
+  Policy ensemble(folder / "ensemble.pt", "ensemble");
+  torch::Tensor states = ensemble.InitialStates(3);
+  torch::Tensor obs = ObservationsWithNearestReturns({20.0, 100.0, 20.0});
+  obs.slice(1, 0, kNavigationSize) =
+      ObservationsUnderWay({0.5F, 0.5F, 1.0F}, {0.0F, 0.0F, 3.14159265F})
+          .slice(1, 0, kNavigationSize);
+  const torch::Tensor actions = ensemble.Step(obs, states);  // near; far; near but stalled
+  EXPECT_TRUE(
+      torch::equal(actions, torch::tensor({1.0F, 0.0F, -1.0F, 0.5F, -1.0F, 0.5F}).view({3, 2})));
+}
+
 TEST(EnsemblePolicy, RefusesARuleItCannotApply) {
-  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(3, {30.0}); }),
+  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(3, {30.0, std::nullopt}); }),
             "--near-within: takes exactly two policies (the one near obstacles, the other), got 3");
-  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(2, {150.0}); }),
+  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(2, {150.0, std::nullopt}); }),
             "--near-within 150: expects metres in (0, 150)");
   EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(1, {}); }),
             "an ensemble needs at least two policies");
+  EXPECT_EQ(UserErrorMessage([] {
+              CheckEnsemble(3, {std::nullopt, StallRule{}});
+            }),
+            "--stall-pace: takes exactly two policies (the one that steers first, the relief), "
+            "got 3");
+  EXPECT_EQ(UserErrorMessage([] {
+              CheckEnsemble(2, {std::nullopt, StallRule{0.5, 200}});
+            }),
+            "--stall-pace 0.5: expects m/s in (0, 0.5)");
+  EXPECT_EQ(UserErrorMessage([] {
+              CheckEnsemble(2, {std::nullopt, StallRule{0.1, 0}});
+            }),
+            "--stall-steps 0: expects at least 1");
 }
 
 TEST(EnsemblePolicy, RefusesToWriteOverAMember) {

@@ -26,7 +26,7 @@ StudySpec EnsembleOf(const std::vector<std::string>& members) {
     config.name = member;
     spec.ppo_configs.push_back(config);
   }
-  spec.ensembles = {{"pair", members, 1, std::nullopt}};
+  spec.ensembles = {{"pair", members, 1, std::nullopt, std::nullopt}};
   return spec;
 }
 

@@ -94,7 +94,7 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
 TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);
-  spec.ensembles = {{"mix", {"locked", "baseline", "locked"}, 1, std::nullopt}};
+  spec.ensembles = {{"mix", {"locked", "baseline", "locked"}, 1, std::nullopt, std::nullopt}};
   const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
   const StudyJob& ensemble = Find(jobs, "ensembles/mix/seed_0");
   EXPECT_EQ(ensemble.program, "ensemble_policy");
@@ -114,11 +114,12 @@ TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
                       static_cast<std::size_t>(&ensemble - jobs.data())),
             evaluation.dependencies.end());
   EXPECT_EQ(evaluation.expected_models.at(9), "mix.seed_0");  // after the runs, before the agent
-  // Two helmsmen: the first near obstacles.
-  spec.ensembles = {{"helm", {"locked", "baseline"}, 3, 30.5}};
+  // Two helmsmen: the first near obstacles, the second once the vessel stalls.
+  spec.ensembles = {{"helm", {"locked", "baseline"}, 3, 30.5, StallRule{0.15, 150}}};
   EXPECT_EQ(Find(BuildJobGraph(spec, "/s"), "ensembles/helm/seed_2").args,
             (std::vector<std::string>{"--out", "/s/ensembles/helm/seed_2/policy.pt",
-                                      "--near-within", "30.5", "/s/ppo/locked/seed_2/policy.pt",
+                                      "--near-within", "30.5", "--stall-pace", "0.15",
+                                      "--stall-steps", "150", "/s/ppo/locked/seed_2/policy.pt",
                                       "/s/ppo/baseline/seed_2/policy.pt"}));
 }
 

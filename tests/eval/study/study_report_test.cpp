@@ -100,7 +100,7 @@ TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
   StudySpec spec;
   spec.ppo_seeds = 2;
   spec.ppo_configs = {{"baseline", "baseline", "", true, {}}};
-  spec.ensembles = {{"pair", {"baseline", "baseline"}, 1, std::nullopt}};
+  spec.ensembles = {{"pair", {"baseline", "baseline"}, 1, std::nullopt, std::nullopt}};
   ScenarioSetResults results;
   results.episodes = 2;
   results.models["baseline.seed_0"] = Episodes({80, 80}, {30, 30}, {100, 0});
@@ -154,7 +154,7 @@ TEST(StudyReportTest, AnEnsembleIsComparedWithItsOwnMembers) {
   StudySpec spec;
   spec.ppo_seeds = 2;
   spec.ppo_configs = {{"a", "baseline", "", true, {}}, {"b", "baseline", "", true, {}}};
-  const EnsembleSpec pair{"pair", {"a", "b"}, 2, std::nullopt};
+  const EnsembleSpec pair{"pair", {"a", "b"}, 2, std::nullopt, std::nullopt};
   ScenarioSetResults results;
   results.episodes = 1;
   results.models["a.seed_0"] = Episodes({60}, {10}, {0});

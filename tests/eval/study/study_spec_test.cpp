@@ -106,8 +106,9 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, std::string(kStudy) + R"(ensembles:
   mixed: {members: [shallow_locked, baseline, shallow_locked]}
   pair: {members: [baseline, shallow_log], count: 2, near_within_m: 30.5}
+  relieved: {members: [baseline, shallow_log], stall_pace_mps: 0.2, stall_steps: 50}
 )"));
-  ASSERT_EQ(spec.ensembles.size(), 2U);
+  ASSERT_EQ(spec.ensembles.size(), 3U);
   const EnsembleSpec& mixed = spec.ensembles[0];
   EXPECT_EQ(mixed.members,
             (std::vector<std::string>{"shallow_locked", "baseline", "shallow_locked"}));
@@ -121,17 +122,22 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_EQ(pair.near_within_m, 30.5);
   EXPECT_EQ(pair.MemberSeed(0, 1), 1);
   EXPECT_EQ(pair.MaxCount(3), 3);
-  EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5, std::nullopt};
+  EXPECT_FALSE(pair.stall);
+  const EnsembleSpec& relieved = spec.ensembles[2];
+  ASSERT_TRUE(relieved.stall);
+  EXPECT_EQ(relieved.stall->pace_mps, 0.2);
+  EXPECT_EQ(relieved.stall->steps, 50);
+  EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5, std::nullopt, std::nullopt};
   EXPECT_EQ(quad.MemberSeed(2, 3), 8);  // a's seeds 3 and 8, b's 3 and 8 in ensemble 3
   EXPECT_EQ(quad.MemberSeed(3, 3), 8);
   EXPECT_EQ(quad.MaxCount(10), 5);
   const std::vector<SeededModel> models = spec.SeededModels();
-  ASSERT_EQ(models.size(), 5U);
+  ASSERT_EQ(models.size(), 6U);
   EXPECT_EQ(models[3].name, "mixed");
   EXPECT_EQ(models[4].seeds, 2);
   // Fewer seeds, fewer ensembles; a kind whose members are not all kept goes.
   const StudySpec one_seed = SelectConfigs(spec, {}, 1);
-  ASSERT_EQ(one_seed.ensembles.size(), 1U);
+  ASSERT_EQ(one_seed.ensembles.size(), 2U);
   EXPECT_EQ(one_seed.ensembles[0].name, "pair");
   EXPECT_EQ(one_seed.ensembles[0].count, 1);
   EXPECT_TRUE(SelectConfigs(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
@@ -170,6 +176,16 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
        "ensembles.e.near_within_m"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], near_within_m: near}}",
        "ensembles.e.near_within_m"},
+      {"ppo: {seeds: 3, configs: {a: {}}}\nensembles: {e: {members: [a, a, a], stall_pace_mps: "
+       "0.1}}",
+       "ensembles.e.stall_pace_mps"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_pace_mps: 0.5}}",
+       "ensembles.e.stall_pace_mps"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_steps: 100}}",
+       "ensembles.e.stall_steps"},
+      {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_pace_mps: 0.1, "
+       "stall_steps: 0}}",
+       "ensembles.e.stall_steps"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });

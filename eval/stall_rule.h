@@ -1,0 +1,22 @@
+// When the second of two policies of an ensemble takes the helm for the rest of an episode
+// (eval/policy_ensemble.h). Our most cautious agents time out where they stop or circle before a
+// passage (README, "A relief when the vessel stalls"): the other policy then steers. Kept apart
+// from the ensemble, which needs LibTorch, so that study files can name a rule.
+#pragma once
+
+namespace colav {
+
+/// The pace average's value at an episode's start (m/s), about our agents' cruising speed (the
+/// reward's top speed is 0.57 m/s), so that a vessel starting from rest is not taken for stalled.
+inline constexpr double kStallPaceStartMps = 0.5;
+
+/// The vessel stalls once its pace towards the look-ahead point, u cos(heading error) (m/s),
+/// averaged exponentially over `steps` steps from kStallPaceStartMps at the episode's start,
+/// falls below `pace_mps` (0 < pace_mps < kStallPaceStartMps, steps >= 1). A vessel stopped or
+/// circling makes no pace; one swerving round an obstacle still does.
+struct StallRule {
+  double pace_mps = 0.1;
+  int steps = 200;
+};
+
+}  // namespace colav
