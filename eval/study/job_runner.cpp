@@ -22,6 +22,7 @@
 
 #include "eval/study/job_claims.h"
 #include "eval/study/process_identity.h"
+#include "eval/study/recorded_settings.h"
 #include "src/cli.h"
 #include "src/error.h"
 #include "src/progress.h"
@@ -162,11 +163,14 @@ std::string LastLine(const std::string& text) {
   return last;
 }
 
-// The last non-empty line of a job's log, to say why it failed.
-std::string LastLogLine(const std::filesystem::path& log) {
-  std::ifstream in(log);
-  return LastLine(std::string(std::istreambuf_iterator<char>(in), {}));
+// The contents of a text file ("" when unreadable).
+std::string FileText(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  return {std::istreambuf_iterator<char>(in), {}};
 }
+
+// The last non-empty line of a job's log, to say why it failed.
+std::string LastLogLine(const std::filesystem::path& log) { return LastLine(FileText(log)); }
 
 class Scheduler {
  public:
@@ -402,7 +406,10 @@ std::map<std::string, std::string> CheckJobConfigurations(
     const std::vector<StudyJob>& jobs, const std::filesystem::path& program_dir) {
   std::map<std::string, std::string> configurations;
   for (const StudyJob& job : jobs) {
-    if (!job.check_configuration || Complete(job)) continue;
+    if (!job.check_configuration) continue;
+    const std::filesystem::path recorded = job.complete_marker.parent_path() / "config.yaml";
+    const bool finished = Complete(job);
+    if (finished && !std::filesystem::exists(recorded)) continue;
     std::vector<std::string> args = job.args;
     args.emplace_back("--print-config");
     const auto [status, output] = RunCapturingOutput(CommandLine(program_dir, job, args));
@@ -412,6 +419,13 @@ std::map<std::string, std::string> CheckJobConfigurations(
           error == std::string::npos ? LastLine(output) : output.substr(error + 7);
       throw UserError("job " + job.id + ": " + job.program + ": " +
                       message.substr(0, message.find('\n')));
+    }
+    if (finished) {
+      if (const auto difference = FirstSettingDifference(FileText(recorded), output)) {
+        throw UserError("job " + job.id + ": the finished run in " +
+                        recorded.parent_path().string() + " has " + *difference +
+                        ": move that folder away to run it again");
+      }
     }
     configurations[job.id] = output;
   }

@@ -42,8 +42,10 @@ struct JobRunSummary {
 
 /// Asks each job's program to resolve its configuration (--print-config) before anything runs,
 /// so that a bad key or value in the study fails at once: a UserError naming the job and the
-/// program's own one-line message. Returns each checked job's resolved configuration (YAML) by
-/// job id.
+/// program's own one-line message. A finished job whose run recorded its settings (config.yaml
+/// beside its complete marker) is checked too, and one whose recorded settings differ from those
+/// the study now asks for is a UserError naming the setting (recorded_settings.h). Returns each
+/// checked job's resolved configuration (YAML) by job id.
 std::map<std::string, std::string> CheckJobConfigurations(const std::vector<StudyJob>& jobs,
                                                           const std::filesystem::path& program_dir);
 

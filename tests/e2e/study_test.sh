@@ -2,8 +2,8 @@
 # The study runner end to end with the real programs at a tiny budget: a bad program key and an
 # ensemble of runs that would observe differently are refused before any work; 2 PPO
 # configurations x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report; a
-# second invocation skips every job; a study stopped by SIGTERM during a PPO run exits 130 and the
-# same command then finishes it.
+# second invocation skips every job, and one whose study file changed is refused; a study stopped
+# by SIGTERM during a PPO run exits 130 and the same command then finishes it.
 #   study_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
 BIN=$(cd "$1" && pwd)
@@ -128,6 +128,15 @@ grep -q "training seed(s) of 2048 steps (shallow_locked: 3072);" "$WORK/run/REPO
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
   fail "second run failed"
 grep -q "0 jobs run, 12 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+
+# A study file changed after its runs finished is refused before any work, naming the setting;
+# the finished runs are not reported as runs of the new file.
+sed -e 's/^  steps: 2048/  steps: 2560/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"
+status=0
+"$BIN/study" "$WORK/changed.yaml" --out "$WORK/run" 2>"$WORK/changed.err" >/dev/null || status=$?
+[ $status -eq 2 ] && [ "$(wc -l <"$WORK/changed.err")" -eq 1 ] &&
+  grep -q "job ppo/baseline/seed_0: the finished run in $WORK/run/ppo/baseline/seed_0 has ppo.total_steps = 2048, the study asks for 2560" \
+    "$WORK/changed.err" || { cat "$WORK/changed.err"; fail "a changed study file on finished runs"; }
 
 # Stopped in the middle of a longer PPO run, then resumed by the same command.
 sed -e 's/steps: 2048/steps: 400000/' "$WORK/tiny.yaml" >"$WORK/long.yaml"
