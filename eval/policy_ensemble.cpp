@@ -130,25 +130,22 @@ ObservationSettings CommonSettings(const std::vector<Policy>& members) {
 
 void CheckEnsemble(std::size_t members, const EnsembleRule& rule) {
   if (members < 2) throw UserError("an ensemble needs at least two policies");
-  if (rule.near_within_m) {
+  // The rules that hand the helm from one member to the other: `roles` names the two.
+  const auto require_two = [members](const std::string& flag, const std::string& roles) {
     if (members != 2) {
       throw UserError(
-          fmt::format("--near-within: takes exactly two policies (the one near "
-                      "obstacles, the other), got {}",
-                      members));
+          fmt::format("{}: takes exactly two policies ({}), got {}", flag, roles, members));
     }
+  };
+  if (rule.near_within_m) {
+    require_two("--near-within", "the one near obstacles, the other");
     if (!(*rule.near_within_m > 0.0 && *rule.near_within_m < RangeFinder::kRange)) {
       throw UserError(fmt::format("--near-within {}: expects metres in (0, {})",
                                   *rule.near_within_m, RangeFinder::kRange));
     }
   }
   if (rule.stall) {
-    if (members != 2) {
-      throw UserError(
-          fmt::format("--stall-pace: takes exactly two policies (the one that steers first, the "
-                      "relief), got {}",
-                      members));
-    }
+    require_two("--stall-pace", "the one that steers first, the relief");
     if (!(rule.stall->pace_mps > 0.0 && rule.stall->pace_mps < kStallPaceStartMps)) {
       throw UserError(fmt::format("--stall-pace {}: expects m/s in (0, {})", rule.stall->pace_mps,
                                   kStallPaceStartMps));
