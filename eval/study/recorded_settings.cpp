@@ -10,10 +10,16 @@
 namespace colav {
 namespace {
 
-// Every scalar of a configuration as ("section.key", value), in the file's order.
+// Every scalar of a configuration as ("section.key", value), in the file's order; none when the
+// text is not YAML.
 std::vector<std::pair<std::string, std::string>> Settings(const std::string& yaml) {
   std::vector<std::pair<std::string, std::string>> settings;
-  const YAML::Node root = YAML::Load(yaml);
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml);
+  } catch (const YAML::Exception&) {
+    return settings;
+  }
   if (!root.IsMap()) return settings;
   for (const auto& section : root) {
     if (!section.second.IsMap()) continue;

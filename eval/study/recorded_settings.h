@@ -13,7 +13,8 @@ namespace colav {
 /// values, as "KEY = RECORDED, the study asks for PRINTED"; nullopt when none. Paths (values with
 /// a '/': runs copied between study folders name other files) and thread counts (the study sets
 /// them from --jobs; they change no result) are not compared. A key one side lacks is not
-/// compared: runs made before a key existed ran with its default.
+/// compared: runs made before a key existed ran with its default. A record that is not YAML
+/// holds no setting to compare.
 std::optional<std::string> FirstSettingDifference(const std::string& recorded,
                                                   const std::string& printed);
 

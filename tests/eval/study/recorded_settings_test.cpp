@@ -44,6 +44,7 @@ extractor:
   EXPECT_EQ(FirstSettingDifference(kRecorded, printed), std::nullopt);
   EXPECT_EQ(FirstSettingDifference(kRecorded, "extractor:\n  head: reference\n"),
             "extractor.head = fc_mu, the study asks for reference");
+  EXPECT_EQ(FirstSettingDifference("ppo: [unclosed", "ppo:\n  gamma: 0.9\n"), std::nullopt);
 }
 
 }  // namespace
