@@ -10,10 +10,13 @@ namespace colav {
 /// reward's top speed is 0.57 m/s), so that a vessel starting from rest is not taken for stalled.
 inline constexpr double kStallPaceStartMps = 0.5;
 
+/// The longest pace average a rule may name (steps): beyond any episode (2,000 steps).
+inline constexpr int kMaxStallSteps = 100000;
+
 /// The vessel stalls once its pace towards the look-ahead point, u cos(heading error) (m/s),
 /// averaged exponentially over `steps` steps from kStallPaceStartMps at the episode's start,
-/// falls below `pace_mps` (0 < pace_mps < kStallPaceStartMps, steps >= 1). A vessel stopped or
-/// circling makes no pace; one swerving round an obstacle still does.
+/// falls below `pace_mps` (0 < pace_mps < kStallPaceStartMps, 1 <= steps <= kMaxStallSteps). A
+/// vessel stopped or circling makes no pace; one swerving round an obstacle still does.
 struct StallRule {
   double pace_mps = 0.1;
   int steps = 200;

@@ -45,7 +45,8 @@ int EnsemblePolicyProgram(int argc, char** argv) {
       "below this (default: no stall rule)",
       0.0, kStallPaceStartMps);
   AddNumberFlag<int>(app, "--stall-steps", stall.steps,
-                     "steps the stall rule's pace is averaged over (exponentially)", 1, 100000)
+                     "steps the stall rule's pace is averaged over (exponentially)", 1,
+                     kMaxStallSteps)
       ->needs(stall_pace);
   const ConfigFlags config_flags(app, ConfigSchema());  // no keys; --print-config as everywhere
   ParseCommandLine(app, argc, argv);

@@ -14,6 +14,7 @@
 #include <iterator>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -420,12 +421,11 @@ std::map<std::string, std::string> CheckJobConfigurations(
       throw UserError("job " + job.id + ": " + job.program + ": " +
                       message.substr(0, message.find('\n')));
     }
-    if (finished) {
-      if (const auto difference = FirstSettingDifference(FileText(recorded), output)) {
-        throw UserError("job " + job.id + ": the finished run in " +
-                        recorded.parent_path().string() + " has " + *difference +
-                        ": move that folder away to run it again");
-      }
+    const std::optional<std::string> difference =
+        finished ? FirstSettingDifference(FileText(recorded), output) : std::nullopt;
+    if (difference) {
+      throw UserError("job " + job.id + ": the finished run in " + recorded.parent_path().string() +
+                      " has " + *difference + ": move that folder away to run it again");
     }
     configurations[job.id] = output;
   }

@@ -225,26 +225,25 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
                                               "seed(s)",
                                               spec.ppo_seeds));
   }
-  if (node["near_within_m"]) {
+  // The rules that hand the helm from one member to the other: `roles` names the two.
+  const auto require_two = [&](const std::string& rule_key, const std::string& roles) {
     if (ensemble.members.size() != 2) {
-      reader.Fail(key + ".near_within_m",
-                  "takes exactly two members (the one near obstacles, "
-                  "the other)");
+      reader.Fail(rule_key, "takes exactly two members (" + roles + ")");
     }
+  };
+  if (node["near_within_m"]) {
+    require_two(key + ".near_within_m", "the one near obstacles, the other");
     ensemble.near_within_m =
         reader.Number(node["near_within_m"], key + ".near_within_m", 0.0, kSensorRangeM);
   }
   if (node["stall_pace_mps"]) {
-    if (ensemble.members.size() != 2) {
-      reader.Fail(key + ".stall_pace_mps",
-                  "takes exactly two members (the one that steers first, the relief)");
-    }
+    require_two(key + ".stall_pace_mps", "the one that steers first, the relief");
     StallRule stall;
     stall.pace_mps =
         reader.Number(node["stall_pace_mps"], key + ".stall_pace_mps", 0.0, kStallPaceStartMps);
     if (node["stall_steps"]) {
-      stall.steps =
-          static_cast<int>(reader.Integer(node["stall_steps"], key + ".stall_steps", 1, 100000));
+      stall.steps = static_cast<int>(
+          reader.Integer(node["stall_steps"], key + ".stall_steps", 1, kMaxStallSteps));
     }
     ensemble.stall = stall;
   } else if (node["stall_steps"]) {
