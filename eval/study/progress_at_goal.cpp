@@ -40,4 +40,18 @@ ProgressAtGoalSplit SplitProgressAtGoal(const std::vector<const ModelEpisodes*>&
           elsewhere.Probability()};
 }
 
+SeedScores ProgressToFinish(const std::vector<const ModelEpisodes*>& seeds) {
+  constexpr double kFinish = 100.0;  // %, as the study's progress
+  SeedScores scores;
+  for (const ModelEpisodes* seed : seeds) {
+    const std::vector<double>& progress = seed->at("progress");
+    const std::vector<double>& goal = seed->at("goal");
+    std::vector<double>& finish = scores.emplace_back(progress);
+    for (std::size_t s = 0; s < finish.size(); ++s) {
+      if (goal[s] > 0.0) finish[s] = kFinish;
+    }
+  }
+  return scores;
+}
+
 }  // namespace colav

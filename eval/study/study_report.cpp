@@ -219,15 +219,18 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
         "training seed; ties count half), with a 95 % bootstrap interval over seeds and "
         "scenarios. Above 0.5 with the whole interval: better. The progress comparison split: "
         "P(more progress) where both reached the goal (and the share of such pairs), where "
-        "either did not.\n\n"
+        "either did not. Where both reached the goal, the one that entered the goal's 5 m "
+        "circle farther beside the path stops nearer its end and wins; progress to the finish "
+        "counts every goal as 100 %, so only the episodes that end short of it decide.\n\n"
         "| model | over | progress | cte | collisions | return | progress: both at goal (share) "
-        "/ elsewhere |\n|---|---|---|---|---|---|---|\n";
+        "/ elsewhere | progress to the finish |\n|---|---|---|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
     const ProgressAtGoalSplit& split = row.progress_split;
     md << "| " << row.model << " | " << row.over
        << MetricCells(row.metrics, {"progress", "cross_track_error", "collision", "return"})
-       << fmt::format(" | {:.2f} ({:.0f} %) / {:.2f} |\n", split.both_at_goal_probability,
-                      100.0 * split.both_at_goal_share, split.elsewhere_probability);
+       << fmt::format(" | {:.2f} ({:.0f} %) / {:.2f}", split.both_at_goal_probability,
+                      100.0 * split.both_at_goal_share, split.elsewhere_probability)
+       << MetricCells(row.metrics, {kProgressToFinish}) << " |\n";
   }
 }
 
@@ -447,6 +450,8 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
         row.metrics[metric.name] = ProbabilityOfImprovementInterval(
             Scores(seeds.second, metric), Scores(other.second, metric), kBootstrapSeed);
       }
+      row.metrics[kProgressToFinish] = ProbabilityOfImprovementInterval(
+          ProgressToFinish(seeds.second), ProgressToFinish(other.second), kBootstrapSeed);
       report.improvements.push_back(row);
       if (other.second.size() == 1 && seeds.second.size() >= 2) {
         report.agents_among_seeds.push_back(

@@ -79,6 +79,8 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_EQ(over_baseline.over, "baseline");
   EXPECT_DOUBLE_EQ(over_baseline.metrics.at("progress").probability, 1.0);
   EXPECT_DOUBLE_EQ(over_baseline.metrics.at("cross_track_error").probability, 1.0);  // lower cte
+  // No episode reached the goal: progress to the finish is progress itself.
+  EXPECT_DOUBLE_EQ(over_baseline.metrics.at(kProgressToFinish).probability, 1.0);
   // Collisions, lower is better, per scenario over the 2 x 2 seed pairs:
   // t0: better {0, 0} vs {100, 100}: 4 wins; t1: {0, 0} vs {0, 100}: 2 wins + 2 ties; t2: 4 ties;
   // t3: {0, 100} vs {0, 0}: 2 ties, 2 losses. (4 + 3 + 2 + 1) / 16.
@@ -147,6 +149,19 @@ TEST(StudyReportTest, TheProgressComparisonIsSplitWhereBothReachTheGoal) {
   EXPECT_DOUBLE_EQ(seeds.both_at_goal_share, 0.5);
   EXPECT_DOUBLE_EQ(seeds.both_at_goal_probability, 1.0 / 3.0);
   EXPECT_DOUBLE_EQ(seeds.elsewhere_probability, 1.0);
+}
+
+// To the finish every goal counts 100 %: a's earlier last step at the goal (98 against b's 99)
+// becomes a tie, so a, which gets farther where both fail, wins 2 of 3 instead of 1.5.
+TEST(StudyReportTest, ProgressToTheFinishCountsEveryGoalAsTheWholePath) {
+  ModelEpisodes a = Episodes({98, 60, 99}, {10, 10, 10}, {0, 0, 0});
+  ModelEpisodes b = Episodes({99, 50, 99}, {10, 10, 10}, {0, 100, 0});
+  a["goal"] = {100, 0, 100};
+  b["goal"] = {100, 0, 100};
+  EXPECT_EQ(ProgressToFinish({&a, &b}), (SeedScores{{100, 60, 100}, {100, 50, 100}}));
+  EXPECT_DOUBLE_EQ(ProbabilityOfImprovement({a.at("progress")}, {b.at("progress")}), 0.5);
+  EXPECT_DOUBLE_EQ(ProbabilityOfImprovement(ProgressToFinish({&a}), ProgressToFinish({&b})),
+                   2.0 / 3.0);
 }
 
 // Over a kind's ensembles: ensemble k against the runs it holds, not against other runs.
