@@ -38,6 +38,17 @@ def deep_vae(tmp_path_factory):
     return folder / "data.h5", folder / "vae" / "seed_0" / "encoder.pt"
 
 
+class HeldAction(torch.nn.Module):
+    """A policy that holds the same action (surge, rudder) whatever it sees."""
+
+    def __init__(self, surge: float, rudder: float):
+        super().__init__()
+        self.action = torch.tensor([[surge, rudder]])
+
+    def forward(self, obs):
+        return self.action.expand(obs.shape[0], 2)
+
+
 class RecurrentPolicyStandIn(torch.nn.Module):
     """What train_ppo exports for a recurrent policy, but `step`: recurrent_size (1),
     initial_state(B) (zeros) and a forward that refuses. Subclasses define step(obs, state) ->

@@ -9,20 +9,9 @@ import pytest
 import torch
 
 import colav
-from conftest import SOURCE_DIR
+from conftest import HeldAction, SOURCE_DIR
 
 SCRIPT = SOURCE_DIR / "scripts" / "describe_time_outs.py"
-
-
-class ConstantPolicy(torch.nn.Module):
-    """The same action whatever it sees."""
-
-    def __init__(self, surge: float, rudder: float):
-        super().__init__()
-        self.action = torch.tensor([[surge, rudder]])
-
-    def forward(self, obs):
-        return self.action.expand(obs.shape[0], 2)
 
 
 def run(*args):
@@ -39,7 +28,7 @@ def study(tmp_path_factory):
     for name, action in (("circle", (1.0, 1.0)), ("still", (-1.0, 0.0))):
         run_dir = folder / "ppo" / name / "seed_0"
         run_dir.mkdir(parents=True)
-        torch.jit.script(ConstantPolicy(*action)).save(str(run_dir / "policy.pt"))
+        torch.jit.script(HeldAction(*action)).save(str(run_dir / "policy.pt"))
     seeds = colav.evaluation_scenario_seeds(3)
     (folder / "eval" / "study").mkdir(parents=True)
     with open(folder / "eval" / "study" / "episodes.csv", "w", newline="") as file:
