@@ -111,6 +111,16 @@ for name, episodes in (("study", 6), ("paper", 4)):
     assert 0 <= poi[0]["metrics"]["progress"]["probability"] <= 1
     assert all(0 <= p["progress_split"][k] <= 1 for p in poi for k in
                ("both_at_goal_share", "both_at_goal_probability", "elsewhere_probability")), poi
+    # Progress to the finish: every goal counts 100 %; P over scenarios and seed pairs.
+    finish = lambda model: [100.0 if r["goal"] == "1" else 100 * float(r["progress"])
+                            for r in rows if r["model"] == model]
+    ours = [finish(f"shallow_locked.seed_{k}") for k in range(2)]
+    theirs = [finish(f"baseline.seed_{k}") for k in range(2)]
+    wins = [(a[t] > b[t]) + 0.5 * (a[t] == b[t]) for a in ours for b in theirs
+            for t in range(len(a))]
+    to_finish = poi[0]["metrics"]["progress_to_finish"]
+    assert abs(to_finish["probability"] - statistics.fmean(wins)) < 1e-9, (wins, to_finish)
+    assert to_finish["low"] <= to_finish["probability"] <= to_finish["high"], to_finish
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
 assert s["ensembles"] == {"pair": {"members": ["shallow_locked", "baseline"], "count": 2}}
 # How each run ended: its seeds' wall-clock, final std and late training episodes.
