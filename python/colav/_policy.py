@@ -64,8 +64,10 @@ class Policy:
         """Deterministic actions float32 [len(worlds), 2] for the rows `worlds` of obs [N, n]
         (default: every row). A recurrent policy steps the memory of each of these worlds and
         keeps the state after; `episode_starts` (bool [N], as SB3's RecurrentPPO takes) marks the
-        worlds whose observation starts an episode, whose memory restarts from 0. The memories
-        are created, at 0, by the first call, for N worlds; a memoryless policy ignores both."""
+        worlds whose observation starts an episode, whose memory restarts from the module's
+        initial_state (zeros for train_ppo's memories; an ensemble's stall rule starts its pace at
+        0.5 m/s). The memories are created so by the first call, for N worlds; a memoryless
+        policy ignores both."""
         obs = np.asarray(obs, dtype=np.float32)
         if obs.ndim != 2:
             raise ValueError(f"Policy.act: obs of shape {obs.shape}, not [worlds, observation]")
@@ -92,4 +94,6 @@ class Policy:
         starts = np.asarray(episode_starts, dtype=bool)
         if starts.shape != (worlds,):
             raise ValueError(f"Policy.act: episode_starts of shape {starts.shape}, not ({worlds},)")
-        self._states[np.flatnonzero(starts)] = 0.0
+        restarting = np.flatnonzero(starts)
+        if len(restarting):
+            self._states[restarting] = self.module.initial_state(len(restarting))

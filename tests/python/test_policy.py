@@ -105,6 +105,23 @@ def test_a_recurrent_policy_keeps_one_memory_per_world(tmp_path):
     np.testing.assert_array_equal(policy.act(obs, starts)[:, 0], [1, 2, 4])
 
 
+class CountingFromTen(CountingPolicy):
+    """CountingPolicy whose memory starts at 10, as an ensemble's stall rule starts its pace at
+    0.5 m/s rather than 0."""
+
+    @torch.jit.export
+    def initial_state(self, batch: int):
+        return torch.full((batch, 1), 10.0)
+
+
+def test_an_episode_start_restarts_the_memory_from_the_initial_state(tmp_path):
+    policy = colav.Policy(save(CountingFromTen(), tmp_path / "policy.pt"))
+    obs = observations(2)
+    np.testing.assert_array_equal(policy.act(obs)[:, 0], [11, 11])
+    np.testing.assert_array_equal(policy.act(obs)[:, 0], [12, 12])
+    np.testing.assert_array_equal(policy.act(obs, np.array([False, True]))[:, 0], [13, 11])
+
+
 def test_refuses_what_it_cannot_run(tmp_path):
     with pytest.raises(ValueError, match="missing.pt: no such policy file"):
         colav.Policy(tmp_path / "missing.pt")
