@@ -129,11 +129,13 @@ def main():
             f"(median {statistics.median(r[measure] for r in mine):.2f})" for measure in MEASURES)
         print(f"{kind}: {len(mine)} episodes, {alike} replayed alike; {summary}")
     if args.out:
+        temporary = args.out + ".tmp"  # renamed into place once whole
         try:
-            with open(args.out, "w", newline="") as file:
+            with open(temporary, "w", newline="") as file:
                 writer = csv.DictWriter(file, fieldnames=COLUMNS)
                 writer.writeheader()
                 writer.writerows(rows)
+            os.replace(temporary, args.out)
         except OSError as error:
             fail(f"{args.out}: {error.strerror}")
 
