@@ -220,9 +220,9 @@ void ImprovementTable(std::ostringstream& md, const ScenarioSetReport& report) {
         "scenarios. Above 0.5 with the whole interval: better. The progress comparison split: "
         "P(more progress) where both reached the goal (and the share of such pairs), where "
         "either did not. Where both reached the goal, the one that entered the goal's 5 m "
-        "circle farther beside the path ends nearer the path's end and wins; progress to the "
-        "finish "
-        "counts every goal as 100 %, so only the episodes that end short of it decide.\n\n"
+        "circle farther beside the path ends nearer the path's end and wins. Progress to the "
+        "finish counts every goal as 100 %, so only the episodes that end short of it "
+        "decide.\n\n"
         "| model | over | progress | cte | collisions | return | progress: both at goal (share) "
         "/ elsewhere | progress to the finish |\n|---|---|---|---|---|---|---|---|\n";
   for (const ImprovementSummary& row : report.improvements) {
