@@ -32,7 +32,6 @@ import math
 import os
 import statistics
 import sys
-import tempfile
 
 import numpy as np
 
@@ -72,12 +71,12 @@ def finishes(policy, scenarios):
     obs = np.stack([env.reset()[0] for env in envs])
     rows = [None] * len(envs)
     starts = np.ones(len(envs), dtype=bool)
-    while any(row is None for row in rows):
-        playing = [k for k, row in enumerate(rows) if row is None]
-        actions = policy.act(obs, starts)
+    playing = list(range(len(envs)))
+    while playing:  # the policy acts for the episodes still playing only, as evaluate's does
+        actions = policy.act(obs, starts, worlds=playing)
         starts[:] = False
-        for k in playing:
-            obs[k], _, terminated, truncated, info = envs[k].step(actions[k])
+        for k, action in zip(playing, actions):
+            obs[k], _, terminated, truncated, info = envs[k].step(action)
             if terminated or truncated:
                 metrics = info["episode_metrics"]
                 length = metrics["path_length"]
@@ -87,6 +86,7 @@ def finishes(policy, scenarios):
                            "short_of_end_m": (1.0 - metrics["progress"]) * length,
                            "predicted_short_of_end_m": predicted_short_of_end(
                                side, length, envs[k].settings)}
+        playing = [k for k in playing if rows[k] is None]
     return rows
 
 
@@ -116,14 +116,13 @@ def compare_at_goal(rows_a, rows_b):
 
 def write_rows(path, rows):
     """The episode rows to `path`, through a temporary file renamed into place."""
-    folder = os.path.dirname(os.path.abspath(path))
+    temporary = path + ".tmp"
     try:
-        with tempfile.NamedTemporaryFile("w", newline="", dir=folder, delete=False,
-                                         suffix=".tmp") as file:
+        with open(temporary, "w", newline="") as file:
             writer = csv.DictWriter(file, fieldnames=COLUMNS)
             writer.writeheader()
             writer.writerows(rows)
-        os.replace(file.name, path)
+        os.replace(temporary, path)
     except OSError as error:
         fail(f"{path}: {error.strerror}")
 
