@@ -28,12 +28,14 @@
 #include <torch/torch.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "env/environment_spec.h"
 #include "models/feature_extractor.h"
 
 namespace colav {
@@ -46,6 +48,12 @@ struct ActorCriticOptions {
   /// inside [-1, 1], so its entropy is bounded and the entropy bonus cannot widen the std without
   /// end (train/ppo/loss.h).
   bool squash_actions = false;
+  /// Per action (thrust, yaw moment): 0 acts deterministically with the clipped mean (SB3's); a
+  /// scale c > 0 with E[clip(u, -1, 1)], u ~ N(mean, (c * std)^2), the mean action of the training
+  /// policy at that fraction of its std (a policy whose std far exceeds the box otherwise acts
+  /// bang-bang, its clipped mean at a limit). Only the exported policy acts so; training is the
+  /// same. Not with squash_actions.
+  std::array<double, kActionSize> deterministic_std_scale{};
   /// Size of the GRU state between the extractor and the trunks; 0: no memory (the paper's).
   std::int64_t recurrent_size = 0;
   /// Whether the critic's loss trains the GRU as the actor's does (CleanRL's recurrent PPO). false:

@@ -67,10 +67,44 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
   return source.str();
 }
 
-// The deterministic action from the Gaussian's `mean`: BoundedAction of models/actor_critic.h.
+bool ActsWithExpectedClippedAction(const ActorCriticOptions& options) {
+  return options.deterministic_std_scale[0] > 0 || options.deterministic_std_scale[1] > 0;
+}
+
+// A std this small makes expected_clipped_action the clipped mean to the float (a zero std would
+// divide 0 by 0 at a mean of exactly +-1).
+constexpr double kSmallestDeterministicStd = 1e-30;
+
+// The buffer deterministic_std [2]: the trained std times deterministic_std_scale.
+torch::Tensor DeterministicStd(ActorCriticImpl& model) {
+  const auto& scale = model.options().deterministic_std_scale;
+  const torch::Tensor scales = torch::tensor({scale[0], scale[1]}, torch::kFloat64);
+  return (model.log_std().detach().to(torch::kFloat64).exp() * scales)
+      .clamp_min(kSmallestDeterministicStd)
+      .to(torch::kFloat32);
+}
+
+// E[clip(u, -1, 1)] for u ~ N(mean, s^2), with a = (-1 - mean) / s and b = (1 - mean) / s:
+// -Phi(a) + (1 - Phi(b)) + mean * (Phi(b) - Phi(a)) + s * (phi(a) - phi(b)).
+constexpr const char* kExpectedClippedActionSource =
+    "def expected_clipped_action(self, mean: Tensor) -> Tensor:\n"
+    "    s = self.deterministic_std\n"
+    "    a = (-1.0 - mean) / s\n"
+    "    b = (1.0 - mean) / s\n"
+    "    cdf_a = 0.5 * (1.0 + torch.erf(a * 0.7071067811865476))\n"
+    "    cdf_b = 0.5 * (1.0 + torch.erf(b * 0.7071067811865476))\n"
+    "    pdf_a = 0.3989422804014327 * torch.exp(-0.5 * a * a)\n"
+    "    pdf_b = 0.3989422804014327 * torch.exp(-0.5 * b * b)\n"
+    "    return (1.0 - cdf_b) - cdf_a + mean * (cdf_b - cdf_a) + s * (pdf_a - pdf_b)\n";
+
+// The deterministic action from the Gaussian's `mean`: BoundedAction of models/actor_critic.h, or
+// the expected clipped action (ActorCriticOptions::deterministic_std_scale).
 std::string DeterministicActionSource(const std::string& mean, const ActorCriticImpl& model) {
-  return model.options().squash_actions ? "torch.tanh(" + mean + ")"
-                                        : "torch.clamp(" + mean + ", -1.0, 1.0)";
+  if (model.options().squash_actions) return "torch.tanh(" + mean + ")";
+  if (ActsWithExpectedClippedAction(model.options())) {
+    return "self.expected_clipped_action(" + mean + ")";
+  }
+  return "torch.clamp(" + mean + ", -1.0, 1.0)";
 }
 
 // Statements from the trunk input `f` to the return of the deterministic action, or of the value.
@@ -177,8 +211,14 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
     script.register_attribute("recurrent_size", c10::IntType::get(),
                               model.options().recurrent_size);
   }
+  std::string expected_clipped_action;
+  if (ActsWithExpectedClippedAction(model.options())) {
+    script.register_buffer("deterministic_std", DeterministicStd(model));
+    expected_clipped_action = kExpectedClippedActionSource;
+  }
   script.define(
       FeaturesSource(*model.features_extractor(), navigation.has_value()) +
+      expected_clipped_action +
       (model.options().recurrent_size > 0 ? RecurrentSource(model) : MemorylessSource(model)));
   return script;
 }

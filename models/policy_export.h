@@ -6,6 +6,10 @@
 //   forward(obs: float32 [B, 6 + 180 * scans]) -> action [B, 2]: the Gaussian's mean clipped to
 //                                     [-1, 1], or its tanh for a policy trained with squashed
 //                                     actions (policy.squash_actions): the deterministic action;
+//                                     with deterministic_std_scale c (policy.deterministic_*), per
+//                                     action E[clip(u, -1, 1)], u ~ N(mean, (c * std)^2), through
+//                                     expected_clipped_action(mean) and the buffer
+//                                     deterministic_std [2] (c times the trained std);
 //   value(obs) -> [B, 1];  features(obs) -> [B, 6 + scans * P] (the extractor's output, [B, 18]
 //   for one scan and the paper's extractors).
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead

@@ -1,7 +1,12 @@
 #include "models/policy_export.h"
 
+#include <ATen/CPUGeneratorImpl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <utility>
 
 #include "env/environment_spec.h"
 #include "models/observation_settings_record.h"
@@ -52,6 +57,87 @@ TEST(PolicyExportTest, ASquashingPolicyActsWithTheTanhOfItsMean) {
   torch::NoGradGuard no_grad;
   model->action_net()->weight.normal_(0.0, 3.0);
   ExpectExportMatches(model, directory.path() / "policy.pt");
+}
+
+// A model whose action mean is `mean` for every observation, with the std `std`.
+ActorCritic ConstantMeanModel(ActorCriticOptions options, std::array<float, 2> mean,
+                              std::array<float, 2> std) {
+  ActorCritic model(std::move(options));
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.zero_();
+  model->action_net()->bias.copy_(torch::tensor({mean[0], mean[1]}));
+  model->log_std().copy_(torch::tensor({std[0], std[1]}).log());
+  return model;
+}
+
+torch::Tensor ExportedAction(ActorCritic& model, const std::filesystem::path& path) {
+  ExportPolicy(*model, 1, ObservationSettings{}, path);
+  const torch::Tensor obs = torch::rand({3, model->features_extractor()->observation_size()});
+  return torch::jit::load(path.string()).forward({obs}).toTensor();
+}
+
+// E[clip(u, -1, 1)], u ~ N(m, s^2), by hand (Phi and phi of a = (-1 - m) / s, b = (1 - m) / s):
+// m = 0.5, s = 1: -Phi(-1.5) + 1 - Phi(0.5) + 0.5 (Phi(0.5) - Phi(-1.5)) + phi(-1.5) - phi(0.5)
+// = -0.0668072 + 0.3085375 + 0.3123276 + 0.1295176 - 0.3520653 = 0.3315102; m = -3, s = 1:
+// -0.9915164; m = 0.2, s = 0.5: 0.1897392. A scale of 0 keeps the clipped mean.
+TEST(PolicyExportTest, AScaledStdActsWithTheMeanOfTheClippedGaussian) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.deterministic_std_scale = {1.0, 1.0};
+  ActorCritic both = ConstantMeanModel(options, {0.5f, -3.0f}, {1.0f, 1.0f});
+  const torch::Tensor action = ExportedAction(both, directory.path() / "both.pt");
+  EXPECT_NEAR(action[0][0].item<float>(), 0.3315102f, 1e-6);
+  EXPECT_NEAR(action[0][1].item<float>(), -0.9915164f, 1e-6);
+  EXPECT_TRUE(torch::equal(action[0], action[2]));
+
+  options.deterministic_std_scale = {0.25, 0.0};  // 0.25 * 2 = 0.5 on the thrust only
+  ActorCritic thrust = ConstantMeanModel(options, {0.2f, 1.7f}, {2.0f, 3.0f});
+  const torch::Tensor thrust_action = ExportedAction(thrust, directory.path() / "thrust.pt");
+  EXPECT_NEAR(thrust_action[0][0].item<float>(), 0.1897392f, 1e-6);
+  EXPECT_EQ(thrust_action[0][1].item<float>(), 1.0f);
+}
+
+// The same against the clipped Gaussian sampled: a policy of std far past the box (as the best
+// recipe's, 60-120), at a quarter of its std, on the means of a random network.
+TEST(PolicyExportTest, TheExpectedClippedActionIsTheMeanOfSampledClippedActions) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.deterministic_std_scale = {0.25, 0.25};
+  options.log_std_init = std::log(60.0);
+  ActorCritic model(options);
+  torch::NoGradGuard no_grad;
+  at::Generator generator = at::make_generator<at::CPUGeneratorImpl>(11);
+  model->action_net()->weight.normal_(0.0, 20.0, generator);  // means across the noise's width
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 1, ObservationSettings{}, path);
+  const torch::Tensor obs =
+      torch::rand({4, model->features_extractor()->observation_size()}, generator);
+  const torch::Tensor action = torch::jit::load(path.string()).forward({obs}).toTensor();
+  const torch::Tensor mean = model->forward(obs).first;
+  const torch::Tensor noise = torch::randn({200000, 4, 2}, generator) * 15.0;
+  const torch::Tensor sampled = (mean.unsqueeze(0) + noise).clamp(-1.0, 1.0).mean(0);
+  // 200,000 samples of a variable within [-1, 1]: standard error below 0.0023.
+  EXPECT_TRUE(torch::allclose(action, sampled, 0.0, 0.01)) << action << sampled;
+  EXPECT_GT((mean.abs() > 1.0).sum().item<int>(), 0);  // some means outside the box
+}
+
+// A recurrent policy's step acts alike.
+TEST(PolicyExportTest, ARecurrentPolicyStepsWithTheExpectedClippedAction) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  options.hidden_sizes = {16, 8};
+  options.deterministic_std_scale = {1.0, 0.0};
+  ActorCritic model = ConstantMeanModel(options, {0.5f, -3.0f}, {1.0f, 1.0f});
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 1, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  const torch::Tensor state = loaded.get_method("initial_state")({2}).toTensor();
+  const torch::Tensor obs = torch::rand({2, kObservationSize});
+  const torch::Tensor action =
+      loaded.get_method("step")({obs, state}).toTuple()->elements()[0].toTensor();
+  EXPECT_NEAR(action[1][0].item<float>(), 0.3315102f, 1e-6);
+  EXPECT_EQ(action[1][1].item<float>(), -1.0f);
 }
 
 // The message of the exception the TorchScript interpreter throws in `action`, or a marker.

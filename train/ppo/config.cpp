@@ -22,6 +22,9 @@ constexpr std::int64_t kMaxConvChannels = 1024;
 constexpr std::int64_t kMaxRolloutSamples = 1 << 20;
 // Environment steps of a run at most: a thousand times the paper's 3 million.
 constexpr std::int64_t kMaxSteps = 3'000'000'000;
+// Fractions of the trained std for the deterministic action: 1 is the training policy's own mean
+// action; ten times its noise is already far past any use.
+constexpr double kMaxDeterministicStdScale = 10.0;
 
 std::vector<std::int64_t> ParseLayerSizes(const std::string& text) {
   constexpr const char* kKey = "policy.hidden_sizes";
@@ -140,6 +143,17 @@ void RequireMemoryForItsTraining(PpoRunOptions& options) {
     throw UserError(
         "policy.separate_critic_memory = true trains the critic's own memory on its loss: leave "
         "policy.value_trains_memory true");
+  }
+}
+
+// An expected clipped action for a policy whose actions are squashed, not clipped.
+void RequireClippedActionsForDeterministicStd(PpoRunOptions& options) {
+  const ActorCriticOptions& model = options.model;
+  const bool smoothed = model.deterministic_std_scale[0] > 0 || model.deterministic_std_scale[1] > 0;
+  if (model.squash_actions && smoothed) {
+    throw UserError(
+        "policy.deterministic_thrust_std_scale and policy.deterministic_moment_std_scale average "
+        "clipped actions: leave them 0 with policy.squash_actions = true");
   }
 }
 
@@ -273,6 +287,18 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
           "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "
           "it to [-1, 1]; the entropy bonus is then the bounded distribution's")
+      .Number(
+          "policy.deterministic_thrust_std_scale",
+          [](Run & o) -> auto& { return o.model.deterministic_std_scale[0]; },
+          "the exported policy's thrust: E[clip(u, -1, 1)], u ~ N(mean, (scale * std)^2), the "
+          "mean thrust of the training policy at this fraction of its std; 0: the clipped mean "
+          "(SB3's); training is unchanged",
+          0.0, kMaxDeterministicStdScale)
+      .Number(
+          "policy.deterministic_moment_std_scale",
+          [](Run & o) -> auto& { return o.model.deterministic_std_scale[1]; },
+          "the same for the exported policy's yaw moment (rudder)", 0.0,
+          kMaxDeterministicStdScale)
       .Coded("extractor.name", [](Run & o) -> auto& { return o.model.extractor.kind; },
              "perception feature extractor",
              TextCodec<ExtractorKind>{ExtractorKindName, ParseExtractorKind},
@@ -331,6 +357,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireRolloutSizes)
       .Then(RequireWholeSequences)
       .Then(RequireMemoryForItsTraining)
+      .Then(RequireClippedActionsForDeterministicStd)
       .Then(DeriveModelSettings);
   return binding;
 }
