@@ -65,6 +65,10 @@ struct ActorCriticOptions {
   bool separate_critic_memory = false;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 
+  /// Whether the deterministic action of some action is the expected clipped one.
+  bool smooths_deterministic_action() const {
+    return deterministic_std_scale[0] > 0 || deterministic_std_scale[1] > 0;
+  }
   /// Values of a step's state: recurrent_size, twice that with separate_critic_memory.
   std::int64_t state_size() const { return recurrent_size * (separate_critic_memory ? 2 : 1); }
 };

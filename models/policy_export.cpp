@@ -67,10 +67,6 @@ std::string TrunkSource(torch::nn::Sequential& trunk, const std::string& prefix)
   return source.str();
 }
 
-bool ActsWithExpectedClippedAction(const ActorCriticOptions& options) {
-  return options.deterministic_std_scale[0] > 0 || options.deterministic_std_scale[1] > 0;
-}
-
 // A std this small makes expected_clipped_action the clipped mean to the float (a zero std would
 // divide 0 by 0 at a mean of exactly +-1).
 constexpr double kSmallestDeterministicStd = 1e-30;
@@ -101,7 +97,7 @@ constexpr const char* kExpectedClippedActionSource =
 // the expected clipped action (ActorCriticOptions::deterministic_std_scale).
 std::string DeterministicActionSource(const std::string& mean, const ActorCriticImpl& model) {
   if (model.options().squash_actions) return "torch.tanh(" + mean + ")";
-  if (ActsWithExpectedClippedAction(model.options())) {
+  if (model.options().smooths_deterministic_action()) {
     return "self.expected_clipped_action(" + mean + ")";
   }
   return "torch.clamp(" + mean + ", -1.0, 1.0)";
@@ -212,7 +208,7 @@ torch::jit::Module ScriptPolicy(ActorCriticImpl& model, std::int64_t global_step
                               model.options().recurrent_size);
   }
   std::string expected_clipped_action;
-  if (ActsWithExpectedClippedAction(model.options())) {
+  if (model.options().smooths_deterministic_action()) {
     script.register_buffer("deterministic_std", DeterministicStd(model));
     expected_clipped_action = kExpectedClippedActionSource;
   }

@@ -148,9 +148,7 @@ void RequireMemoryForItsTraining(PpoRunOptions& options) {
 
 // An expected clipped action for a policy whose actions are squashed, not clipped.
 void RequireClippedActionsForDeterministicStd(PpoRunOptions& options) {
-  const ActorCriticOptions& model = options.model;
-  const bool smoothed = model.deterministic_std_scale[0] > 0 || model.deterministic_std_scale[1] > 0;
-  if (model.squash_actions && smoothed) {
+  if (options.model.squash_actions && options.model.smooths_deterministic_action()) {
     throw UserError(
         "policy.deterministic_thrust_std_scale and policy.deterministic_moment_std_scale average "
         "clipped actions: leave them 0 with policy.squash_actions = true");
@@ -297,8 +295,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Number(
           "policy.deterministic_moment_std_scale",
           [](Run & o) -> auto& { return o.model.deterministic_std_scale[1]; },
-          "the same for the exported policy's yaw moment (rudder)", 0.0,
-          kMaxDeterministicStdScale)
+          "the same for the exported policy's yaw moment (rudder)", 0.0, kMaxDeterministicStdScale)
       .Coded("extractor.name", [](Run & o) -> auto& { return o.model.extractor.kind; },
              "perception feature extractor",
              TextCodec<ExtractorKind>{ExtractorKindName, ParseExtractorKind},
