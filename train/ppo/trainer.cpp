@@ -3,9 +3,11 @@
 #include <spdlog/spdlog.h>
 
 #include <chrono>
+#include <fstream>
 #include <optional>
 #include <vector>
 
+#include "models/policy_export.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
@@ -55,6 +57,16 @@ nlohmann::json SummaryJson(const nlohmann::json& resolved_config, const PpoRunSu
           {"config", resolved_config}};
 }
 
+// RUN/summary.json if it records a finished run (train_ppo writes one when stopped, too).
+std::optional<nlohmann::json> FinishedSummary(const std::filesystem::path& run_dir) {
+  std::ifstream in(run_dir / "summary.json");
+  nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (summary.is_discarded() || !summary.is_object() || !summary.value("finished", false)) {
+    return std::nullopt;
+  }
+  return summary;
+}
+
 class PpoTrainer {
  public:
   PpoTrainer(const PpoRunOptions& options, nlohmann::json resolved_config,
@@ -79,12 +91,16 @@ class PpoTrainer {
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env),
-                static_cast<int>(options.model.state_size())) {
+                static_cast<int>(options.model.state_size())),
+        finished_summary_(resume && counters_.global_step >= options_.total_steps
+                              ? FinishedSummary(run_dir_)
+                              : std::nullopt) {
     updater_.set_n_updates(counters_.n_updates);
     if (resume) ContinueFromRolloutStart();
   }
 
   PpoRunSummary Run() {
+    if (finished_summary_) return ExportFinishedRunAgain();
     const Clock::time_point start = Clock::now();
     const std::int64_t first_step = counters_.global_step;
     const double previous_wall_s = counters_.wall_s;
@@ -165,6 +181,21 @@ class PpoTrainer {
   }
 
  private:
+  // A finished run resumed trains no further and keeps its training files and figures. Only the
+  // deterministic action may have changed (train_ppo lets nothing else), so policy.pt is
+  // exported again and summary.json records the configuration it was exported with.
+  PpoRunSummary ExportFinishedRunAgain() {
+    ExportPolicy(*model_, counters_.global_step, observation_settings_, run_dir_ / "policy.pt",
+                 collector_.navigation_normalization());
+    (*finished_summary_)["config"] = resolved_config_;
+    WriteTextFileAtomically(run_dir_ / "summary.json", finished_summary_->dump(2) + "\n");
+    spdlog::info("the run had finished: policy.pt exported again, nothing trained");
+    summary_.counters = counters_;
+    summary_.finished = true;
+    summary_.rolling = logs_.Rolling();
+    return summary_;
+  }
+
   static KeptLogRows KeptRows(const TrainingCounters& counters) {
     return {counters.episodes, counters.rollouts, counters.global_step};
   }
@@ -181,8 +212,8 @@ class PpoTrainer {
       }
       collector_.RestoreNavigationMoments(rollout_start_.navigation_moments);
       const std::size_t states = rollout_start_.policy_states.size();
-      if (states != 0 && states != static_cast<std::size_t>(options_.n_envs) *
-                                       updater_.policy().state_size()) {
+      if (states != 0 &&
+          states != static_cast<std::size_t>(options_.n_envs) * updater_.policy().state_size()) {
         throw std::invalid_argument(std::to_string(states) + " policy state values");
       }
       collector_.RestorePolicyStates(rollout_start_.policy_states);
@@ -240,6 +271,8 @@ class PpoTrainer {
   TrainingLogs logs_;
   RolloutBuffer buffer_;
   PpoRunSummary summary_;
+  /// A resumed run's summary.json when the run had already finished.
+  std::optional<nlohmann::json> finished_summary_;
 };
 
 }  // namespace

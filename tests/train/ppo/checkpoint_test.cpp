@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -186,6 +187,48 @@ TEST(PpoCheckpointTest, ExtendedRunEqualsTheUninterruptedRun) {
   EXPECT_GT(CountLines(whole / "episodes.csv"), 5U);
   EXPECT_EQ(ReadFile(whole / "episodes.csv"), ReadFile(pieces / "episodes.csv"));
   EXPECT_EQ(ReadFile(whole / "policy.pt"), ReadFile(pieces / "policy.pt"));
+}
+
+// A finished run resumed trains no further and keeps its files; with another deterministic
+// action it exports the policy a run trained with that action from the start exports.
+TEST(PpoCheckpointTest, FinishedRunResumedOnlyExportsItsPolicyAgain) {
+  testing_util::TemporaryFolder directory;
+  const std::filesystem::path run = directory.path() / "run";
+  const std::filesystem::path smoothed = directory.path() / "smoothed";
+  std::filesystem::create_directories(run);
+  std::filesystem::create_directories(smoothed);
+  Train(ShortEpisodes(64), run, /*resume=*/false);
+  const auto read_all = [&] {
+    std::map<std::string, std::string> files;
+    for (const char* file : {"policy.pt", "training_state.pt", "summary.json", "episodes.csv",
+                             "updates.csv", "checkpoints/policy_64.pt"}) {
+      files[file] = ReadFile(run / file);
+    }
+    return files;
+  };
+  const std::map<std::string, std::string> trained = read_all();
+
+  const PpoRunSummary again = Train(ShortEpisodes(64), run, /*resume=*/true);
+  EXPECT_TRUE(again.finished);
+  EXPECT_EQ(again.session_steps, 0);
+  EXPECT_EQ(again.counters.global_step, 64);
+  EXPECT_EQ(read_all(), trained);
+
+  Config smoothed_config = ShortEpisodes(64);
+  smoothed_config.Set("policy.deterministic_thrust_std_scale", "0.25", "test");
+  Train(smoothed_config, run, /*resume=*/true);
+  Train(smoothed_config, smoothed, /*resume=*/false);
+  std::map<std::string, std::string> exported = read_all();
+  EXPECT_NE(exported["policy.pt"], trained.at("policy.pt"));
+  EXPECT_EQ(exported["policy.pt"], ReadFile(smoothed / "policy.pt"));
+  const nlohmann::json before = nlohmann::json::parse(trained.at("summary.json"));
+  nlohmann::json after = nlohmann::json::parse(exported["summary.json"]);
+  EXPECT_EQ(after["config"]["policy"]["deterministic_thrust_std_scale"], 0.25);
+  after["config"] = before["config"];
+  EXPECT_EQ(after, before);
+  exported.erase("policy.pt");
+  exported.erase("summary.json");
+  for (const auto& [file, bytes] : exported) EXPECT_EQ(bytes, trained.at(file)) << file;
 }
 
 // Trains 160 steps with `key` true in one go (`whole`) and in two sessions of 64 and 160 steps

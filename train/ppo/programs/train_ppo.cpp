@@ -101,8 +101,11 @@ int Main(int argc, char** argv) {
     run.StartNewRun({"training_state.pt", "summary.json"}, kRunOutputs, overwrite,
                     "continue it with --resume " + run_path + ", or replace it with --overwrite");
   } else {
-    // The thread count does not change results (the worlds step the same on any number).
-    run.RequireConfigUnchanged(config, binding.Schema(), {"train.env_threads"});
+    // The thread count does not change results (the worlds step the same on any number); the
+    // deterministic action only shapes the exported policy.pt (a finished run exports it again).
+    run.RequireConfigUnchanged(config, binding.Schema(),
+                               {"train.env_threads", "policy.deterministic_thrust_std_scale",
+                                "policy.deterministic_moment_std_scale"});
   }
   colav::InitLogging("train_ppo", run.LogPath(), verbose);
   run.WriteResolvedConfig(config);
