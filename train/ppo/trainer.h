@@ -33,8 +33,10 @@ struct PpoRunSummary {
 /// Trains the agent configured by `options` in run_dir, from scratch or resuming from its
 /// checkpoint, and writes run_dir/summary.json, which records `resolved_config` (Config::ToJson of
 /// the configuration the options were read from). Logs what it starts once the files it resumes
-/// have been checked (a UserError otherwise). LibTorch's intra-op thread count is the caller's
-/// to set (train_ppo runs one).
+/// have been checked (a UserError otherwise). A finished run resumed with its total steps trains
+/// nothing: it writes only policy.pt and the configuration in summary.json again (a changed
+/// deterministic action). LibTorch's intra-op thread count is the caller's to set (train_ppo
+/// runs one).
 PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
                        const std::filesystem::path& run_dir, bool resume);
 
