@@ -309,15 +309,21 @@ Config Config::Defaults(const ConfigSchema& schema) { return Config(schema); }
 Config Config::Load(const ConfigSchema& schema, const std::string& yaml_path,
                     const std::vector<std::string>& overrides) {
   Config config(schema);
-  if (!yaml_path.empty()) config.MergeYamlFile(yaml_path);
+  if (!yaml_path.empty()) config.MergeYaml(LoadYamlFile(yaml_path), yaml_path);
   for (const std::string& assignment : overrides) config.ApplyOverride(assignment, "--set");
   return config;
 }
 
-void Config::MergeYamlFile(const std::string& yaml_path) {
-  const YAML::Node root = LoadYamlFile(yaml_path);
+Config Config::FromYamlText(const ConfigSchema& schema, const std::string& text,
+                            const std::string& origin) {
+  Config config(schema);
+  config.MergeYaml(ParseYamlText(text, origin), origin);
+  return config;
+}
+
+void Config::MergeYaml(const YAML::Node& root, const std::string& origin) {
   if (root.IsNull()) return;  // an empty file changes nothing
-  if (!root.IsMap()) throw UserError(yaml_path + ": expected a map of keys at the top level");
+  if (!root.IsMap()) throw UserError(origin + ": expected a map of keys at the top level");
   // Depth-first over nested maps; a map under a name that is not a key is a group of keys.
   std::vector<std::pair<std::string, YAML::Node>> pending = {{"", root}};
   while (!pending.empty()) {
@@ -327,11 +333,11 @@ void Config::MergeYamlFile(const std::string& yaml_path) {
       const std::string key = prefix + item.first.Scalar();
       const Entry* entry = schema_.Find(key);
       if (entry != nullptr) {
-        values_[key] = ParseValue(*entry, ScalarText(item.second, yaml_path, *entry), yaml_path);
+        values_[key] = ParseValue(*entry, ScalarText(item.second, origin, *entry), origin);
       } else if (item.second.IsMap()) {
         pending.emplace_back(key + ".", item.second);
       } else {
-        throw UserError(yaml_path + ": " + UnknownKeyMessage(schema_, key));
+        throw UserError(origin + ": " + UnknownKeyMessage(schema_, key));
       }
     }
   }

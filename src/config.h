@@ -11,6 +11,10 @@
 #include <variant>
 #include <vector>
 
+namespace YAML {
+class Node;
+}  // namespace YAML
+
 namespace colav {
 
 /// A configuration value: the alternative held is the key's type.
@@ -63,6 +67,10 @@ class Config {
   static Config Load(const ConfigSchema& schema, const std::string& yaml_path,
                      const std::vector<std::string>& overrides = {});
   static Config Defaults(const ConfigSchema& schema);
+  /// Defaults, then the nested YAML `text` (ToYaml's form) recorded in `origin`, which errors
+  /// name (a checkpoint that keeps the configuration its run was trained with).
+  static Config FromYamlText(const ConfigSchema& schema, const std::string& text,
+                             const std::string& origin);
 
   /// Sets `key` from its text form, validated like an override; errors name `origin` (e.g.
   /// "--steps").
@@ -88,7 +96,8 @@ class Config {
 
  private:
   explicit Config(const ConfigSchema& schema);
-  void MergeYamlFile(const std::string& yaml_path);
+  /// Merges the values of `root` (nested maps), read from `origin`.
+  void MergeYaml(const YAML::Node& root, const std::string& origin);
   const ConfigValue& Get(const std::string& key, std::size_t type_index) const;
 
   ConfigSchema schema_;

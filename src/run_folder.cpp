@@ -69,8 +69,14 @@ void RunFolder::RequireConfigUnchanged(const Config& config, const ConfigSchema&
   if (!std::filesystem::is_regular_file(stored_path)) {
     throw UserError(path_.string() + ": no config.yaml to continue the run with");
   }
-  const std::map<std::string, std::string> stored =
-      FlatValues(Config::Load(schema, stored_path.string()));
+  RequireConfigUnchanged(config, Config::Load(schema, stored_path.string()), stored_path.string(),
+                         free_keys);
+}
+
+void RunFolder::RequireConfigUnchanged(const Config& config, const Config& recorded,
+                                       const std::string& source,
+                                       const std::vector<std::string>& free_keys) const {
+  const std::map<std::string, std::string> stored = FlatValues(recorded);
   const std::map<std::string, std::string> current = FlatValues(config);
   const auto changed = std::find_if(current.begin(), current.end(), [&](const auto& entry) {
     const bool free = std::find(free_keys.begin(), free_keys.end(), entry.first) != free_keys.end();
@@ -81,8 +87,8 @@ void RunFolder::RequireConfigUnchanged(const Config& config, const ConfigSchema&
   const auto original = stored.find(changed->first);
   throw UserError(path_.string() + ": '" + changed->first + "' = " + changed->second +
                   " differs from the run's " +
-                  (original == stored.end() ? "(none)" : original->second) + " (" +
-                  stored_path.string() + "); a run continues with its configuration");
+                  (original == stored.end() ? "(none)" : original->second) + " (" + source +
+                  "); a run continues with its configuration");
 }
 
 void RunFolder::WriteResolvedConfig(const Config& config) const {

@@ -36,6 +36,11 @@ class RunFolder {
   /// counts). A UserError names the first key that differs.
   void RequireConfigUnchanged(const Config& config, const ConfigSchema& schema,
                               const std::vector<std::string>& free_keys = {}) const;
+  /// The same against `recorded`, the configuration the run was trained with as `source` (a
+  /// file) keeps it: a config.yaml edited by hand is refused too.
+  void RequireConfigUnchanged(const Config& config, const Config& recorded,
+                              const std::string& source,
+                              const std::vector<std::string>& free_keys) const;
   /// Writes the configuration as dir/config.yaml (atomically), so the run can be reproduced.
   void WriteResolvedConfig(const Config& config) const;
   /// dir/<program>.log.

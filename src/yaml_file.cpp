@@ -39,15 +39,19 @@ YAML::Node LoadYamlFile(const std::filesystem::path& path) {
   if (!file) throw UserError(name + ": cannot read (" + std::strerror(errno) + ")");
   std::stringstream text;
   text << file.rdbuf();
+  return ParseYamlText(text.str(), name);
+}
+
+YAML::Node ParseYamlText(const std::string& text, const std::string& origin) {
   YAML::Node root;
   try {
-    root = YAML::Load(text.str());
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
     // yaml-cpp's marks count from 0; editors count from 1.
-    throw UserError(name + ": malformed YAML at line " + std::to_string(e.mark.line + 1) +
+    throw UserError(origin + ": malformed YAML at line " + std::to_string(e.mark.line + 1) +
                     ", column " + std::to_string(e.mark.column + 1) + ": " + e.msg);
   }
-  RejectDuplicateKeys(root, name);
+  RejectDuplicateKeys(root, origin);
   return root;
 }
 

@@ -222,6 +222,32 @@ TEST_F(ConfigFileTest, ToYamlRoundTripsEveryValue) {
   EXPECT_EQ(reloaded.GetString("run.name"), "true");
 }
 
+TEST(ConfigTest, FromYamlTextReadsToJsonAndToYamlBack) {
+  const Config original = Config::Load(TestSchema(), "",
+                                       {"ppo.learning_rate=1e-5", "run.name=true", "seed_offset=3",
+                                        "ppo.normalize_advantage=false", "vae.model=deep"});
+  const Config from_json = Config::FromYamlText(TestSchema(), original.ToJson().dump(), "state");
+  EXPECT_EQ(from_json.ToJson(), original.ToJson());
+  EXPECT_EQ(from_json.GetString("run.name"), "true");
+  EXPECT_EQ(Config::FromYamlText(TestSchema(), original.ToYaml(), "state").ToJson(),
+            original.ToJson());
+  // Keys the text lacks keep their defaults (a record from before a key was declared).
+  EXPECT_EQ(Config::FromYamlText(TestSchema(), R"({"ppo": {"n_epochs": 7}})", "state")
+                .GetDouble("ppo.learning_rate"),
+            2e-4);
+}
+
+TEST(ConfigTest, FromYamlTextErrorsNameTheOrigin) {
+  EXPECT_EQ(UserErrorMessage([] {
+              Config::FromYamlText(TestSchema(), "{ppo: [", "run/state.pt");
+            }).rfind("run/state.pt: malformed YAML at line 1", 0),
+            0U);
+  EXPECT_THAT(UserErrorMessage([] {
+                Config::FromYamlText(TestSchema(), R"({"ppo": {"n_epoch": 7}})", "run/state.pt");
+              }),
+              HasSubstr("run/state.pt: unknown key 'ppo.n_epoch'"));
+}
+
 TEST(ConfigTest, ToYamlKeepsSchemaOrderAndNesting) {
   const std::string yaml = Config::Defaults(TestSchema()).ToYaml();
   EXPECT_LT(yaml.find("ppo:"), yaml.find("vae:"));

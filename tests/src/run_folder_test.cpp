@@ -97,6 +97,24 @@ TEST(RunFolderTest, ContinuedRunRefusesAChangedConfigurationNamingTheKey) {
   EXPECT_NO_THROW(run.RequireConfigUnchanged(more_threads, TwoKeys(), {"train.env_threads"}));
 }
 
+TEST(RunFolderTest, ContinuedRunIsCheckedAgainstTheRecordedConfigurationNotItsFile) {
+  TemporaryFolder folder;
+  const RunFolder run = RunFolder::Create(folder.path(), "train_ppo");
+  // config.yaml edited by hand after the run started: the record in the state file decides.
+  run.WriteResolvedConfig(Config::Load(TwoKeys(), "", {"ppo.n_envs=4"}));
+  const Config recorded = Config::Load(TwoKeys(), "", {"ppo.n_envs=2"});
+  const Config edited = Config::Load(TwoKeys(), (folder / "config.yaml").string());
+  EXPECT_EQ(testing_util::UserErrorMessage(
+                [&] { run.RequireConfigUnchanged(edited, recorded, "run/training_state.pt", {}); }),
+            folder.path().string() +
+                ": 'ppo.n_envs' = 4 differs from the run's 2 (run/training_state.pt); a run "
+                "continues with its configuration");
+  EXPECT_NO_THROW(run.RequireConfigUnchanged(recorded, recorded, "run/training_state.pt", {}));
+  const Config more_threads = Config::Load(TwoKeys(), "", {"ppo.n_envs=2", "train.env_threads=3"});
+  EXPECT_NO_THROW(
+      run.RequireConfigUnchanged(more_threads, recorded, "state", {"train.env_threads"}));
+}
+
 TEST(RunFolderTest, LogIsNamedAfterTheRunningProgramByDefault) {
   TemporaryFolder folder;
   std::filesystem::path log;

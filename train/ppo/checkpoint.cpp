@@ -1,6 +1,7 @@
 #include "train/ppo/checkpoint.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,6 +13,7 @@ namespace colav {
 namespace {
 
 constexpr char kModelPrefix[] = "model/";
+constexpr char kConfigKey[] = "config";  // the resolved configuration's text, as bytes
 constexpr char kOptimizerPrefix[] = "optimizer/";
 
 torch::Tensor ReadTensor(torch::serialize::InputArchive& archive, const std::string& key) {
@@ -147,7 +149,7 @@ void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model
                     const TrainingCounters& counters, const RolloutStart& rollout_start,
                     const ObservationSettings& settings,
                     const std::optional<NavigationNormalization>& navigation,
-                    bool keep_policy_copy) {
+                    const std::string& resolved_config, bool keep_policy_copy) {
   ExportPolicy(model, counters.global_step, settings, run_dir / "policy.pt", navigation);
   if (keep_policy_copy) {
     ExportPolicy(
@@ -169,6 +171,8 @@ void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model
   archive.write("episodes", torch::tensor(counters.episodes));
   archive.write("wall_s", torch::tensor(counters.wall_s, torch::kFloat64));
   WriteRolloutStart(archive, rollout_start);
+  const std::vector<std::uint8_t> config_bytes(resolved_config.begin(), resolved_config.end());
+  archive.write(kConfigKey, torch::tensor(config_bytes, torch::kUInt8));
   WriteFileAtomically(TrainingStatePath(run_dir), [&](const std::filesystem::path& temporary) {
     archive.save_to(temporary.string());
   });
@@ -209,6 +213,24 @@ RolloutStart LoadCheckpoint(const std::filesystem::path& run_dir, ActorCriticImp
     throw UserError(file + " cannot be read: " + reason.substr(0, reason.find('\n')));
   }
   return start;
+}
+
+std::optional<std::string> RecordedConfig(const std::filesystem::path& run_dir) {
+  const std::filesystem::path path = TrainingStatePath(run_dir);
+  const std::string file = "training state '" + path.string() + "'";
+  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
+  torch::Tensor bytes;
+  try {
+    torch::serialize::InputArchive archive;
+    archive.load_from(path.string());
+    if (!archive.try_read(kConfigKey, bytes)) return std::nullopt;
+    bytes = bytes.to(torch::kUInt8).contiguous();
+  } catch (const std::exception& error) {
+    const std::string reason = error.what();
+    throw UserError(file + " cannot be read: " + reason.substr(0, reason.find('\n')));
+  }
+  const auto* begin = bytes.data_ptr<std::uint8_t>();
+  return std::string(begin, begin + bytes.numel());
 }
 
 }  // namespace colav

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "env/batched_environment.h"
 #include "env/observation_settings.h"
@@ -54,13 +55,19 @@ struct RolloutStart {
 std::filesystem::path TrainingStatePath(const std::filesystem::path& run_dir);
 
 /// `settings` are the observation settings the policy is trained with (recorded in policy.pt),
-/// `navigation` the normalisation of its navigation values now, if any (exported with it).
+/// `navigation` the normalisation of its navigation values now, if any (exported with it);
+/// `resolved_config` (Config::ToJson's text) is recorded in the state file, so that a resumed run
+/// is checked against what it was trained with, not against a config.yaml edited since.
 void SaveCheckpoint(const std::filesystem::path& run_dir, ActorCriticImpl& model,
                     const Adam& optimizer, torch::Generator& generator,
                     const TrainingCounters& counters, const RolloutStart& rollout_start,
                     const ObservationSettings& settings,
                     const std::optional<NavigationNormalization>& navigation,
-                    bool keep_policy_copy);
+                    const std::string& resolved_config, bool keep_policy_copy);
+
+/// The configuration text SaveCheckpoint recorded in run_dir's state file; nullopt for a state
+/// file from before it was recorded. A missing or unreadable file is a UserError naming it.
+std::optional<std::string> RecordedConfig(const std::filesystem::path& run_dir);
 
 /// Restores the weights and optimiser in place and returns where the run resumes. A missing,
 /// truncated or inconsistent state file, or one that does not fit `model`, is a UserError naming

@@ -115,7 +115,7 @@ class PpoTrainer {
       logs_.Flush();
       SaveCheckpoint(run_dir_, *model_, updater_.optimizer(), generator_, counters_, rollout_start_,
                      observation_settings_, collector_.navigation_normalization(),
-                     keep_policy_copy);
+                     resolved_config_.dump(), keep_policy_copy);
       summary_.checkpoint_s += SecondsSince(checkpoint_start);
     };
     const StopFlag stop_flag;

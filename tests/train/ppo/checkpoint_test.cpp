@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -43,8 +44,10 @@ TEST(PpoCheckpointTest, RoundTripRestoresWeightsOptimiserGeneratorAndCounters) {
   for (int j = 0; j < kNavigationSize; ++j) start.navigation_moments[j] = {0.5 * j, 2.0 + j, 9.0};
   torch::randn({10}, generator);
   const TrainingCounters counters{30000, 12, 3, 17, 42.5};
+  const std::string config_text = R"({"ppo":{"learning_rate":0.0003,"name":"naïve: yes"}})";
   SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, counters, start,
-                 ObservationSettings{}, std::nullopt, true);
+                 ObservationSettings{}, std::nullopt, config_text, true);
+  EXPECT_EQ(RecordedConfig(directory.path()), config_text);
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "policy.pt"));
   EXPECT_TRUE(std::filesystem::exists(directory.path() / "checkpoints" / "policy_30000.pt"));
 
@@ -98,10 +101,19 @@ TEST(PpoCheckpointTest, TruncatedStateIsAUserError) {
   RolloutStart start;
   start.generator_state = generator.get_state();
   SaveCheckpoint(directory.path(), *model, updater.optimizer(), generator, TrainingCounters{},
-                 start, ObservationSettings{}, std::nullopt, false);
+                 start, ObservationSettings{}, std::nullopt, "{}", false);
   const std::filesystem::path state = TrainingStatePath(directory.path());
   std::filesystem::resize_file(state, std::filesystem::file_size(state) / 2);
   EXPECT_THROW(LoadCheckpoint(directory.path(), *model, updater.optimizer()), UserError);
+  EXPECT_THROW(RecordedConfig(directory.path()), UserError);
+}
+
+TEST(PpoCheckpointTest, StateFileFromBeforeTheConfigWasRecordedHasNone) {
+  testing_util::TemporaryFolder directory;
+  torch::serialize::OutputArchive archive;
+  archive.write("global_step", torch::tensor(std::int64_t{64}));
+  archive.save_to(TrainingStatePath(directory.path()).string());
+  EXPECT_EQ(RecordedConfig(directory.path()), std::nullopt);
 }
 
 TEST(PpoCheckpointTest, MissingStateIsAUserError) {
@@ -109,6 +121,7 @@ TEST(PpoCheckpointTest, MissingStateIsAUserError) {
   ActorCritic model(ActorCriticOptions{});
   Adam optimizer(model->TrainableParameters(), AdamOptions{});
   EXPECT_THROW(LoadCheckpoint(directory.path(), *model, optimizer), UserError);
+  EXPECT_THROW(RecordedConfig(directory.path()), UserError);
 }
 
 Config TinyRun(std::int64_t total_steps) {
@@ -149,6 +162,11 @@ TEST(PpoCheckpointTest, ResumedRunContinuesFromTheCheckpointStep) {
     EXPECT_TRUE(std::filesystem::exists(directory.path() / file)) << file;
   }
   EXPECT_EQ(CountLines(directory.path() / "updates.csv"), 3U);
+  // The state file keeps the configuration it was trained with, every value as resolved.
+  const std::optional<std::string> recorded = RecordedConfig(directory.path());
+  ASSERT_TRUE(recorded.has_value());
+  EXPECT_EQ(Config::FromYamlText(PpoRunBinding().Schema(), *recorded, "state").ToYaml(),
+            TinyRun(64).ToYaml());
 
   const PpoRunSummary second = Train(TinyRun(128), directory.path(), /*resume=*/true);
   EXPECT_EQ(second.session_steps, 64);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 #include <cstring>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "src/logging.h"
 #include "src/run_folder.h"
 #include "src/training_diverged.h"
+#include "train/ppo/checkpoint.h"
 #include "train/ppo/config.h"
 #include "train/ppo/encoder_check.h"
 #include "train/ppo/trainer.h"
@@ -42,6 +44,25 @@ std::vector<std::string> WithRunConfig(int argc, char** argv) {
     args.insert(args.begin() + 1, {"--config", resume_dir + "/config.yaml"});
   }
   return args;
+}
+
+// A resumed run continues with the configuration its checkpoint was trained with (state files
+// from before it was recorded: with its config.yaml). The thread count does not change results
+// (the worlds step the same on any number); the deterministic action only shapes the exported
+// policy.pt (a finished run exports it again).
+void RequireRunConfig(const colav::RunFolder& run, const colav::Config& config,
+                      const colav::ConfigSchema& schema) {
+  const std::vector<std::string> free_keys = {"train.env_threads",
+                                              "policy.deterministic_thrust_std_scale",
+                                              "policy.deterministic_moment_std_scale"};
+  const std::optional<std::string> recorded = colav::RecordedConfig(run.path());
+  if (!recorded) {
+    run.RequireConfigUnchanged(config, schema, free_keys);
+    return;
+  }
+  const std::string source = colav::TrainingStatePath(run.path()).string();
+  run.RequireConfigUnchanged(config, colav::Config::FromYamlText(schema, *recorded, source), source,
+                             free_keys);
 }
 
 int Main(int argc, char** argv) {
@@ -101,11 +122,7 @@ int Main(int argc, char** argv) {
     run.StartNewRun({"training_state.pt", "summary.json"}, kRunOutputs, overwrite,
                     "continue it with --resume " + run_path + ", or replace it with --overwrite");
   } else {
-    // The thread count does not change results (the worlds step the same on any number); the
-    // deterministic action only shapes the exported policy.pt (a finished run exports it again).
-    run.RequireConfigUnchanged(config, binding.Schema(),
-                               {"train.env_threads", "policy.deterministic_thrust_std_scale",
-                                "policy.deterministic_moment_std_scale"});
+    RequireRunConfig(run, config, binding.Schema());
   }
   colav::InitLogging("train_ppo", run.LogPath(), verbose);
   run.WriteResolvedConfig(config);
