@@ -36,8 +36,8 @@ class RunFolder {
   /// counts). A UserError names the first key that differs.
   void RequireConfigUnchanged(const Config& config, const ConfigSchema& schema,
                               const std::vector<std::string>& free_keys = {}) const;
-  /// The same against `recorded`, the configuration the run was trained with as `source` (a
-  /// file) keeps it: a config.yaml edited by hand is refused too.
+  /// The same check against `recorded`, the configuration the run was trained with as kept in
+  /// `source` (a file, named in the error): a config.yaml edited by hand is refused too.
   void RequireConfigUnchanged(const Config& config, const Config& recorded,
                               const std::string& source,
                               const std::vector<std::string>& free_keys) const;
