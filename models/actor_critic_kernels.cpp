@@ -2,12 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <vector>
-
-#if defined(__x86_64__)
-#include <xmmintrin.h>
-#endif
 
 // The 8-float vector type below is wider than the baseline ABI's registers; it never crosses a
 // function boundary (all helpers are always_inline), so the ABI note GCC prints does not apply.
@@ -142,6 +137,11 @@ void MatMul(float* c, int ldc, const float* a, int a_row_stride, int a_col_strid
   for (; m + kRowBlock <= M; m += kRowBlock) {
     MatMulRows<kRowBlock>(c + m * ldc, ldc, a + m * a_row_stride, a_row_stride, a_col_stride, b,
                           ldb, N, K, accumulate);
+  }
+  if (m + 2 <= M) {  // a pair of rows shares each load of B
+    MatMulRows<2>(c + m * ldc, ldc, a + m * a_row_stride, a_row_stride, a_col_stride, b, ldb, N, K,
+                  accumulate);
+    m += 2;
   }
   for (; m < M; ++m) {
     MatMulRows<1>(c + m * ldc, ldc, a + m * a_row_stride, a_row_stride, a_col_stride, b, ldb, N, K,
@@ -298,6 +298,14 @@ bool AllFinite(const float* x, int n) {
   return true;
 }
 
+// sqrt of each lane. GCC turns the lane loop into one vsqrtps (sqrtps in the baseline clone):
+// this file is compiled with -fno-math-errno, so a square root needs no errno check.
+COLAV_INLINE Vec Sqrt(Vec v) {
+  Vec root;
+  for (int i = 0; i < kLanes; ++i) root[i] = __builtin_sqrtf(v[i]);
+  return root;
+}
+
 COLAV_MULTIVERSION
 void AdamUpdate(const AdamCoefficients& coefficients, const float* grad, float* exp_avg,
                 float* exp_avg_sq, float* param, int n) {
@@ -306,24 +314,15 @@ void AdamUpdate(const AdamCoefficients& coefficients, const float* grad, float* 
   const float b2 = coefficients.beta2;
   const float correction = coefficients.sqrt_bias_correction2;
   int i = 0;
-#if defined(__x86_64__)
-  // 4 lanes: the square root has no portable vector form, SSE's is in every x86-64 clone.
-  using Vec4 = __m128;
-  for (; i + 4 <= n; i += 4) {
-    Vec4 g, m, v, p;
-    std::memcpy(&g, grad + i, sizeof g);
-    g *= scale;
-    std::memcpy(&m, exp_avg + i, sizeof m);
-    std::memcpy(&v, exp_avg_sq + i, sizeof v);
-    std::memcpy(&p, param + i, sizeof p);
-    m = m * b1 + g * (1.0f - b1);
-    v = v * b2 + g * g * (1.0f - b2);
-    p -= coefficients.step_size * (m / (_mm_sqrt_ps(v) / correction + coefficients.eps));
-    std::memcpy(exp_avg + i, &m, sizeof m);
-    std::memcpy(exp_avg_sq + i, &v, sizeof v);
-    std::memcpy(param + i, &p, sizeof p);
+  for (; i + kLanes <= n; i += kLanes) {
+    const Vec g = Load(grad + i) * scale;
+    const Vec m = Load(exp_avg + i) * b1 + g * (1.0f - b1);
+    const Vec v = Load(exp_avg_sq + i) * b2 + g * g * (1.0f - b2);
+    Store(exp_avg + i, m);
+    Store(exp_avg_sq + i, v);
+    Store(param + i, Load(param + i) - coefficients.step_size *
+                                           (m / (Sqrt(v) / correction + coefficients.eps)));
   }
-#endif
   for (; i < n; ++i) {
     const float g = grad[i] * scale;
     exp_avg[i] = exp_avg[i] * b1 + g * (1.0f - b1);

@@ -49,6 +49,8 @@ FastGru::FastGru(torch::nn::GRUCell& cell, std::vector<torch::Tensor> gradients,
     buffer->resize(states);
   }
   d_previous_.resize(states);
+  d_recurrent_product_.resize(states);
+  weight_hh_transposed_.resize(static_cast<std::size_t>(3 * state_size_) * state_size_);
   transposed_.resize(static_cast<std::size_t>(std::max(input_size_, state_size_)) * max_columns);
 }
 
@@ -62,6 +64,7 @@ const float* FastGru::ForwardSequences(const float* x, const float* initial,
   reset_ = reset;
   kernels::LinearForward(Data(weight_ih_), Data(bias_ih_), x, input_size_, 3 * H, C,
                          input_gates_.data());
+  kernels::Transpose(Data(weight_hh_), 3 * H, H, weight_hh_transposed_.data());
   const float* gi = input_gates_.data();
   float* gh = recurrent_gates_.data();
   const float* b_hh = Data(bias_hh_);
@@ -74,15 +77,17 @@ const float* FastGru::ForwardSequences(const float* x, const float* initial,
         previous_[j * C + c0 + s] = zero ? 0.0f : before;
       }
     }
-    kernels::MatMul(gh + c0, C, Data(weight_hh_), H, 1, previous_.data() + c0, C, 3 * H, S, H,
-                    /*accumulate=*/false);
+    // The step's recurrent projections, row s = W_hh h_s: S rows of 3H values.
+    kernels::MatMul(gh + c0 * 3 * H, 3 * H, previous_.data() + c0, 1, C,
+                    weight_hh_transposed_.data(), 3 * H, S, 3 * H, H, /*accumulate=*/false);
     for (int j = 0; j < H; ++j) {
       for (int s = 0; s < S; ++s) {
         const int c = c0 + s;
-        for (int g = 0; g < 3; ++g) gh[(g * H + j) * C + c] += b_hh[g * H + j];
-        const float r = Sigmoid(gi[j * C + c] + gh[j * C + c]);
-        const float z = Sigmoid(gi[(H + j) * C + c] + gh[(H + j) * C + c]);
-        const float n = std::tanh(gi[(2 * H + j) * C + c] + r * gh[(2 * H + j) * C + c]);
+        float* gh_c = gh + c * 3 * H;
+        for (int g = 0; g < 3; ++g) gh_c[g * H + j] += b_hh[g * H + j];
+        const float r = Sigmoid(gi[j * C + c] + gh_c[j]);
+        const float z = Sigmoid(gi[(H + j) * C + c] + gh_c[H + j]);
+        const float n = std::tanh(gi[(2 * H + j) * C + c] + r * gh_c[2 * H + j]);
         reset_gate_[j * C + c] = r;
         update_gate_[j * C + c] = z;
         candidate_[j * C + c] = n;
@@ -107,7 +112,7 @@ void FastGru::BackwardSequences(const float* x, float* d_states, float* d_x) {
         const float r = reset_gate_[k], z = update_gate_[k], n = candidate_[k];
         const float dn = dh * (1.0f - z) * (1.0f - n * n);
         const float dz = dh * (previous_[k] - n) * z * (1.0f - z);
-        const float dr = dn * recurrent_gates_[(2 * H + j) * C + c] * r * (1.0f - r);
+        const float dr = dn * recurrent_gates_[c * 3 * H + 2 * H + j] * r * (1.0f - r);
         d_input_gates_[k] = dr;
         d_input_gates_[(H + j) * C + c] = dz;
         d_input_gates_[(2 * H + j) * C + c] = dn;
@@ -119,12 +124,16 @@ void FastGru::BackwardSequences(const float* x, float* d_states, float* d_x) {
     }
     if (t == 0) break;  // the first state is the rollout's record, a constant
     // d previous += W_hh^T d_gh; it reaches the step before unless an episode starts here.
-    kernels::MatMul(d_previous_.data() + c0, C, Data(weight_hh_), 1, H,
-                    d_recurrent_gates_.data() + c0, C, H, S, 3 * H, /*accumulate=*/true);
+    // Row s of the product: (W_hh^T d_gh)_s, S rows of H values.
+    float* d_recurrent = d_recurrent_product_.data();
+    kernels::MatMul(d_recurrent, H, d_recurrent_gates_.data() + c0, 1, C, Data(weight_hh_), H, S,
+                    H, 3 * H, /*accumulate=*/false);
     for (int j = 0; j < H; ++j) {
       for (int s = 0; s < S; ++s) {
+        const int k = j * C + c0 + s;
+        d_previous_[k] += d_recurrent[s * H + j];
         if (reset_ != nullptr && reset_[c0 + s] != 0) continue;
-        d_states[j * C + c0 - S + s] += d_previous_[j * C + c0 + s];
+        d_states[k - S] += d_previous_[k];
       }
     }
   }

@@ -46,11 +46,19 @@ class FastGru {
   std::vector<torch::Tensor> gradients_;
   int L_ = 0, S_ = 0;
   const std::uint8_t* reset_ = nullptr;
-  // [3 * state_size, L * S]: input projections, then their gradients; recurrent projections.
-  std::vector<float> input_gates_, recurrent_gates_;
+  // [3 * state_size, L * S]: input projections, then their gradients.
+  std::vector<float> input_gates_;
+  // [L * S, 3 * state_size]: the recurrent projections, transposed from the layout of the rest:
+  // each step's product is computed as [S, state_size] x W_hh^T, because a step has only S
+  // columns (2 in the default minibatch), too few for the vector lanes, and 3 * state_size rows.
+  std::vector<float> recurrent_gates_;
   // [state_size, L * S]: the state each step starts from, its gates r, z, n and its result.
   std::vector<float> previous_, reset_gate_, update_gate_, candidate_, states_;
+  // [3 * state_size, L * S]: the gradients of the projections; d_previous_ like previous_.
   std::vector<float> d_input_gates_, d_recurrent_gates_, d_previous_, transposed_;
+  // W_hh^T [state_size, 3 * state_size] for the forward's step products; the backward's step
+  // product ([S, state_size], rows of W_hh^T d_gh) before it is added to d_previous_.
+  std::vector<float> weight_hh_transposed_, d_recurrent_product_;
 };
 
 }  // namespace colav

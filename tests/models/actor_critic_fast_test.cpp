@@ -242,14 +242,18 @@ TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   for (std::size_t i = 0; i < x.size(); ++i) ASSERT_NEAR(y[i], std::tanh(x[i]), 3e-7) << x[i];
 }
 
+// Rows in blocks of 4, then a pair, then one by one: M = 5, 6 and 7 take every remainder; N = 19
+// has a tail of 3 columns past its vector lanes.
 TEST(ActorCriticKernelsTest, MatMulWithStridesAndTails) {
-  const torch::Tensor a = torch::randn({7, 5});
-  const torch::Tensor b = torch::randn({7, 19});
-  std::vector<float> c(5 * 19, 1.0f);
-  // C = A^T B: A(m, k) = a[k, m]
-  kernels::MatMul(c.data(), 19, a.data_ptr<float>(), 1, 5, b.data_ptr<float>(), 19, 5, 19, 7,
-                  /*accumulate=*/true);
-  ExpectClose(c.data(), a.t().mm(b) + 1.0, 1e-5, "C");
+  for (const int M : {5, 6, 7}) {
+    const torch::Tensor a = torch::randn({7, M});
+    const torch::Tensor b = torch::randn({7, 19});
+    std::vector<float> c(M * 19, 1.0f);
+    // C = A^T B: A(m, k) = a[k, m]
+    kernels::MatMul(c.data(), 19, a.data_ptr<float>(), 1, M, b.data_ptr<float>(), 19, M, 19, 7,
+                    /*accumulate=*/true);
+    ExpectClose(c.data(), a.t().mm(b) + 1.0, 1e-5, "C, M = " + std::to_string(M));
+  }
 }
 
 }  // namespace
