@@ -4,7 +4,8 @@
 // Activations are feature-major like those of actor_critic_fast.h: a minibatch of S sequences of
 // L steps is an [n, L * S] array whose column t * S + s holds step t of sequence s, so the input
 // projections of all steps are one matrix product and each step's recurrent product is a block of
-// S columns. Per step (gates r, z, n; PyTorch's equations):
+// S columns (computed transposed, S rows of 3 * state_size: the vector lanes run along the longer
+// side). Per step (gates r, z, n; PyTorch's equations):
 //   r = sigmoid(W_ir x + b_ir + W_hr h + b_hr)    z = sigmoid(W_iz x + b_iz + W_hz h + b_hz)
 //   n = tanh(W_in x + b_in + r * (W_hn h + b_hn))  h' = (1 - z) * n + z * h
 // where h is the previous step's state, or 0 where an episode starts. Backpropagation runs
@@ -54,7 +55,8 @@ class FastGru {
   std::vector<float> recurrent_gates_;
   // [state_size, L * S]: the state each step starts from, its gates r, z, n and its result.
   std::vector<float> previous_, reset_gate_, update_gate_, candidate_, states_;
-  // [3 * state_size, L * S]: the gradients of the projections; d_previous_ like previous_.
+  // [3 * state_size, L * S]: the gradients of the projections; d_previous_ like previous_;
+  // transposed_: scratch for the weight gradients' transposed inputs.
   std::vector<float> d_input_gates_, d_recurrent_gates_, d_previous_, transposed_;
   // W_hh^T [state_size, 3 * state_size] for the forward's step products; the backward's step
   // product ([S, state_size], rows of W_hh^T d_gh) before it is added to d_previous_.
