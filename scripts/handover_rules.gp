@@ -26,7 +26,7 @@ plot data using 4:($3 * family('range')) with linespoints lw 2 pt 13 ps 1.3 lc r
        with points pt (int(word(points, i))) ps 1.3 title title_of(i)
 unset object 1
 set ylabel 'collisions % (lower is better)'
-set yrange [2:3.8]
+set yrange [2:4]
 set object 2 rect from graph 0, graph 0 to first 17, first 3 fc rgb '#b8e0b8' fs solid 0.5 noborder behind
 plot data using 4:($5 * family('range')) with linespoints lw 2 pt 13 ps 1.3 lc rgb '#444444' \
        title 'near member within 10-50 m, then everywhere', \
