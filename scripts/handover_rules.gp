@@ -10,13 +10,13 @@ data = 'docs/handover_rules.csv'
 family(name) = (strcol(1) eq name) ? 1 : NaN
 families = "rule member disagreement"
 title_of(i) = i == 1 ? 'other hand-over rules' : i == 2 ? 'other members' : \
-              'disagreement (the cautious member also steers where the two disagree)'
+              "the members' disagreement (moment or thrust) also hands over"
 points = "9 5 7"
 set key below horizontal box Left reverse maxrows 2
 set grid
 set xlabel 'cross-track error m (lower is better)'
 set xrange [15.5:19]
-set multiplot layout 1,2 title "Hand-over rules on the validation scenarios (5 pairs): every one on the ranges' front or beside it, none in the goal's corner (shaded)"
+set multiplot layout 1,2 title "Hand-over rules on the validation scenarios (5 pairs): every one on the ranges' front, below it or just beside it; none in the goal's corner (shaded)"
 set ylabel 'progress % (higher is better)'
 set yrange [96.1:97.3]
 set object 1 rect from graph 0, first 97 to first 17, graph 1 fc rgb '#b8e0b8' fs solid 0.5 noborder behind
