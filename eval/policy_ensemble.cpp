@@ -21,7 +21,8 @@ std::string MemberName(std::size_t index) { return "member_" + std::to_string(in
 // r, cte/100, heading error, look-ahead heading error, scans]).
 constexpr int kSurgeSpeedIndex = 0;
 constexpr int kHeadingErrorIndex = 4;
-// The stall rule's columns of the state, after the members': the pace average, then 1 once stalled.
+// The stall rule's columns of the state, after the members': the pace average, then the number
+// of stalls so far (at most the number of reliefs, the members after the first).
 constexpr int kStallColumns = 2;
 
 // TorchScript statements that give every member's clipped action, action_<i>, and every recurrent
@@ -69,20 +70,27 @@ std::string CombinedActionSource(const std::vector<std::string>& actions, const 
 }
 
 // Adds to `source` the statements that keep the stall rule's columns of the state, from `column`
-// on, and returns `action` with the second member's action once the vessel has stalled.
+// on, and returns `action` with member k's action from the k-th stall on (k >= 1).
 std::string AddStallSource(const StallRule& stall, int column, const std::string& action,
                            MemberSource& source) {
   const double keep = 1.0 - 1.0 / static_cast<double>(stall.steps);
+  const std::size_t reliefs = source.actions.size() - 1;
   source.body += fmt::format(
       "    pace = {0:.17g} * state[:, {2}:{3}] + {1:.17g} * (obs[:, {5}:{6}] * "
       "torch.cos(obs[:, {7}:{8}]))\n"
-      "    stalled = (state[:, {3}:{4}] > 0.5) | (pace < {9:.17g})\n",
+      "    stalled = pace < {9:.17g}\n"
+      "    stalls = torch.clamp(state[:, {3}:{4}] + stalled.float(), 0.0, {10}.0)\n"
+      "    pace = torch.where(stalled, torch.full_like(pace, {11:.17g}), pace)\n",
       keep, 1.0 - keep, column, column + 1, column + 2, kSurgeSpeedIndex, kSurgeSpeedIndex + 1,
-      kHeadingErrorIndex, kHeadingErrorIndex + 1, stall.pace_mps);
+      kHeadingErrorIndex, kHeadingErrorIndex + 1, stall.pace_mps, reliefs, kStallPaceStartMps);
   source.initial_states.push_back(
       fmt::format("torch.tensor([{:.17g}, 0.0]).repeat(batch, 1)", kStallPaceStartMps));
-  source.next_states.insert(source.next_states.end(), {"pace", "stalled.float()"});
-  return fmt::format("torch.where(stalled, {}, {})", source.actions[1], action);
+  source.next_states.insert(source.next_states.end(), {"pace", "stalls"});
+  std::string steered = action;
+  for (std::size_t k = 1; k <= reliefs; ++k) {
+    steered = fmt::format("torch.where(stalls > {}.5, {}, {})", k - 1, source.actions[k], steered);
+  }
+  return steered;
 }
 
 std::string MemorylessSource(const MemberSource& source, const std::string& action) {
@@ -130,22 +138,20 @@ ObservationSettings CommonSettings(const std::vector<Policy>& members) {
 
 void CheckEnsemble(std::size_t members, const EnsembleRule& rule) {
   if (members < 2) throw UserError("an ensemble needs at least two policies");
-  // The rules that hand the helm from one member to the other: `roles` names the two.
-  const auto require_two = [members](const std::string& flag, const std::string& roles) {
-    if (members != 2) {
-      throw UserError(
-          fmt::format("{}: takes exactly two policies ({}), got {}", flag, roles, members));
-    }
-  };
   if (rule.near_within_m) {
-    require_two("--near-within", "the one near obstacles, the other");
+    // The range rule shares the helm between two; further members can only be reliefs.
+    if (members != 2 && !rule.stall) {
+      throw UserError(fmt::format(
+          "--near-within: takes two policies (the one near obstacles, the other), or more with "
+          "--stall-pace (the later ones relieve at the second stall and after), got {}",
+          members));
+    }
     if (!(*rule.near_within_m > 0.0 && *rule.near_within_m < RangeFinder::kRange)) {
       throw UserError(fmt::format("--near-within {}: expects metres in (0, {})",
                                   *rule.near_within_m, RangeFinder::kRange));
     }
   }
   if (rule.stall) {
-    require_two("--stall-pace", "the one that steers first, the relief");
     if (!(rule.stall->pace_mps > 0.0 && rule.stall->pace_mps < kStallPaceStartMps)) {
       throw UserError(fmt::format("--stall-pace {}: expects m/s in (0, {})", rule.stall->pace_mps,
                                   kStallPaceStartMps));

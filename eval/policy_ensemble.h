@@ -5,7 +5,10 @@
 // one keeps clear of obstacles, another keeps to the path (README, "Two helmsmen"). The members
 // may be memoryless or recurrent, and of different recipes, but must share their observation
 // settings (recorded in the file or its sidecar, eval/policy.h). A stall rule
-// (eval/stall_rule.h) hands the helm to the second of two members for the rest of the episode.
+// (eval/stall_rule.h) hands the helm to the second member for the rest of the episode, or, with
+// more members, to the next one at each stall: a vessel that stalls again under its relief is
+// handed to a third member, which passes where the relief parks (README, "A rescue at the second
+// stall").
 //
 // The ensemble has the interface of a trained policy.pt (models/policy_export.h), so evaluate,
 // study and colav.Policy run it:
@@ -36,11 +39,12 @@ namespace colav {
 
 /// How an ensemble combines its members' clipped actions.
 struct EnsembleRule {
-  /// Absent: their mean. Present (two members only): the first member's action while the newest
-  /// scan's nearest return lies within this many metres (0 < m < 150), the second's otherwise.
+  /// Absent: their mean. Present: the first member's action while the newest scan's nearest
+  /// return lies within this many metres (0 < m < 150), the second's otherwise; two members, or
+  /// more with a stall rule (the later ones are reliefs only).
   std::optional<double> near_within_m;
-  /// Present (two members only): the second member steers from the step the vessel stalls on to
-  /// the end of the episode; before that, the first (or, with near_within_m, the range rule).
+  /// Present: member k (k >= 1) steers from the k-th stall of the episode on, the last member to
+  /// its end; before the first stall, the first member (or, with near_within_m, the range rule).
   std::optional<StallRule> stall;
 };
 

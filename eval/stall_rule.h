@@ -1,6 +1,7 @@
-// When the second of two policies of an ensemble takes the helm for the rest of an episode
-// (eval/policy_ensemble.h). Our most cautious agents time out where they stop or circle before a
-// passage (README, "A relief when the vessel stalls"): the other policy then steers. Kept apart
+// When the next policy of an ensemble takes the helm, for the rest of an episode or until the
+// vessel stalls again (eval/policy_ensemble.h). Our most cautious agents time out where they stop
+// or circle before a passage (README, "A relief when the vessel stalls"): another policy then
+// steers. Kept apart
 // from the ensemble, which needs LibTorch, so that study files can name a rule.
 #pragma once
 
@@ -16,7 +17,8 @@ inline constexpr int kMaxStallSteps = 100000;
 /// The vessel stalls once its pace towards the look-ahead point, u cos(heading error) (m/s),
 /// averaged exponentially over `steps` steps from kStallPaceStartMps at the episode's start,
 /// falls below `pace_mps` (0 < pace_mps < kStallPaceStartMps, 1 <= steps <= kMaxStallSteps). A
-/// vessel stopped or circling makes no pace; one swerving round an obstacle still does.
+/// vessel stopped or circling makes no pace; one swerving round an obstacle still does. Each stall
+/// restarts the average from kStallPaceStartMps, so the next one is the relief's own.
 struct StallRule {
   double pace_mps = 0.1;
   int steps = 200;

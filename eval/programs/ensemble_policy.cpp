@@ -23,9 +23,10 @@ int EnsemblePolicyProgram(int argc, char** argv) {
       "interface, so evaluate, study and colav.Policy run it; with a recurrent member it is\n"
       "recurrent, each member stepping its own slice of the state. With --near-within M, two\n"
       "members: the first steers while an obstacle is within M metres, the second otherwise.\n"
-      "With --stall-pace P, two members: the second steers from the step the vessel stalls (its\n"
-      "pace towards the look-ahead point, averaged over --stall-steps, falls below P m/s) to the\n"
-      "end of the episode."};
+      "With --stall-pace P: the second member steers from the step the vessel stalls (its pace\n"
+      "towards the look-ahead point, averaged over --stall-steps, falls below P m/s) to the end\n"
+      "of the episode; a third, if given, from the step it stalls again (the average restarts at\n"
+      "each stall), and so on. With both rules, the members after the second are reliefs only."};
   std::vector<std::string> members;
   std::string out;
   double near_within_m = 0.0;
@@ -40,9 +41,10 @@ int EnsemblePolicyProgram(int argc, char** argv) {
   StallRule stall;
   CLI::Option* stall_pace = AddNumberFlag<double>(
       app, "--stall-pace", stall.pace_mps,
-      "m/s: the second of two members steers for the rest of the episode once the vessel's pace "
-      "towards the look-ahead point, u cos(heading error), averaged over --stall-steps, falls "
-      "below this (default: no stall rule)",
+      "m/s: the next member takes the helm each time the vessel's pace towards the look-ahead "
+      "point, u cos(heading error), averaged over --stall-steps, falls below this (the second at "
+      "the first stall, a third at the second, ...; the last keeps it to the episode's end; "
+      "default: no stall rule)",
       0.0, kStallPaceStartMps);
   AddNumberFlag<int>(app, "--stall-steps", stall.steps,
                      "steps the stall rule's pace is averaged over (exponentially)", 1,

@@ -387,12 +387,19 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
 
 // How a kind's members share the helm, after its member list ("" for the mean of their actions).
 std::string EnsembleRuleText(const EnsembleSpec& ensemble) {
-  const std::string stall =
-      ensemble.stall ? fmt::format(
-                           "for the rest of the episode once the vessel's pace towards the "
-                           "look-ahead point, averaged over {} steps, falls below {} m/s",
-                           ensemble.stall->steps, ensemble.stall->pace_mps)
-                     : "";
+  std::string stall;
+  if (ensemble.stall) {
+    stall = fmt::format(
+        "for the rest of the episode once the vessel's pace towards the look-ahead point, averaged "
+        "over {} steps, falls below {} m/s",
+        ensemble.stall->steps, ensemble.stall->pace_mps);
+    if (ensemble.members.size() > 2) {
+      stall += fmt::format(
+          ", each later member from the next stall on (the average restarts at "
+          "each stall; {} reliefs in all)",
+          ensemble.members.size() - 1);
+    }
+  }
   if (ensemble.near_within_m) {
     return fmt::format(", the first steering within {} m of an obstacle, the second otherwise{}",
                        *ensemble.near_within_m, stall.empty() ? "" : " and " + stall);

@@ -225,19 +225,17 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
                                               "seed(s)",
                                               spec.ppo_seeds));
   }
-  // The rules that hand the helm from one member to the other: `roles` names the two.
-  const auto require_two = [&](const std::string& rule_key, const std::string& roles) {
-    if (ensemble.members.size() != 2) {
-      reader.Fail(rule_key, "takes exactly two members (" + roles + ")");
-    }
-  };
   if (node["near_within_m"]) {
-    require_two(key + ".near_within_m", "the one near obstacles, the other");
+    // The range rule shares the helm between two; further members can only be reliefs.
+    if (ensemble.members.size() != 2 && !node["stall_pace_mps"]) {
+      reader.Fail(key + ".near_within_m",
+                  "takes two members (the one near obstacles, the other), or more with "
+                  "stall_pace_mps (the later ones relieve at the second stall and after)");
+    }
     ensemble.near_within_m =
         reader.Number(node["near_within_m"], key + ".near_within_m", 0.0, kSensorRangeM);
   }
   if (node["stall_pace_mps"]) {
-    require_two(key + ".stall_pace_mps", "the one that steers first, the relief");
     StallRule stall;
     stall.pace_mps =
         reader.Number(node["stall_pace_mps"], key + ".stall_pace_mps", 0.0, kStallPaceStartMps);

@@ -67,10 +67,11 @@ struct EnsembleSpec {
   std::string name;
   std::vector<std::string> members;  ///< PPO configurations; one listed twice gives two runs
   int count = 1;                     ///< ensembles of this kind
-  /// Two members only: the first steers while an obstacle is within this many metres, the second
-  /// otherwise (EnsembleRule, eval/policy_ensemble.h); absent: the mean of every member's action.
+  /// The first steers while an obstacle is within this many metres, the second otherwise
+  /// (EnsembleRule, eval/policy_ensemble.h; two members, more with a stall rule); absent: the mean
+  /// of every member's action.
   std::optional<double> near_within_m;
-  /// Two members only: the second steers for the rest of the episode once the vessel stalls.
+  /// Member k (k >= 1) steers from the vessel's k-th stall on, the last to the episode's end.
   std::optional<StallRule> stall;
 
   /// The training seed of member `member` (an index into members) in ensemble `k`.

@@ -135,8 +135,9 @@ TEST(EnsemblePolicy, TheSecondOfTwoSteersFromTheStepTheVesselStallsOn) {
   const torch::Tensor first = torch::tensor({1.0F, 0.0F});
   const torch::Tensor relief = torch::tensor({-1.0F, 0.5F});
   // Row 0 cruises (pace 0.5); row 1 runs away from the look-ahead point at 1 m/s (pace -0.25 at
-  // once); row 2 slows to 0.2 m/s (pace 0.35, then 0.275 < 0.3), then speeds up again (0.3875),
-  // but the relief keeps the helm for the rest of the episode.
+  // once); row 2 slows to 0.2 m/s (pace 0.35, then 0.275 < 0.3: a stall, which restarts the
+  // average at 0.5), then cruises at 0.5 m/s, but the relief keeps the helm for the rest of the
+  // episode.
   const std::vector<std::vector<torch::Tensor>> expected = {
       {first, first, first}, {relief, relief, relief}, {first, relief, relief}};
   const std::vector<float> heading_errors = {0.0F, 3.14159265F, 0.0F};
@@ -150,7 +151,38 @@ TEST(EnsemblePolicy, TheSecondOfTwoSteersFromTheStepTheVesselStallsOn) {
           << "row " << row << " step " << step;
     }
   }
-  EXPECT_NEAR(states[2][0].item<float>(), 0.3875F, 1e-6F);
+  EXPECT_NEAR(states[2][0].item<float>(), 0.5F, 1e-6F);
+  EXPECT_TRUE(torch::equal(states.select(1, 1), torch::tensor({0.0F, 1.0F, 1.0F})));  // stalls
+}
+
+TEST(EnsemblePolicy, AThirdMemberSteersFromTheSecondStallOn) {
+  const TemporaryFolder folder;
+  // Pace averaged over 2 steps from 0.5 m/s, restarted at 0.5 by each stall (pace < 0.3).
+  WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, 0.0"), folder / "first.pt"),
+                       SaveMember(ConstantPolicy("-1.0, 0.5"), folder / "relief.pt"),
+                       SaveMember(ConstantPolicy("0.25, -1.0"), folder / "rescue.pt")},
+                      folder / "ensemble.pt", {std::nullopt, StallRule{0.3, 2}});
+  Policy ensemble(folder / "ensemble.pt", "ensemble");
+  torch::Tensor states = ensemble.InitialStates(3);
+  const torch::Tensor first = torch::tensor({1.0F, 0.0F});
+  const torch::Tensor relief = torch::tensor({-1.0F, 0.5F});
+  const torch::Tensor rescue = torch::tensor({0.25F, -1.0F});
+  // Row 0 cruises at 0.5 m/s; row 1 crawls at 0.2 m/s (pace 0.35, 0.275: a stall; again 0.35,
+  // 0.275: the second); row 2 runs away from the look-ahead point (pace -0.25: a stall at every
+  // step, the count held at the two reliefs).
+  const std::vector<std::vector<torch::Tensor>> expected = {
+      {first, first, first, first, first},
+      {first, relief, relief, rescue, rescue},
+      {relief, rescue, rescue, rescue, rescue}};
+  for (int step = 0; step < 5; ++step) {
+    const torch::Tensor actions =
+        ensemble.Step(ObservationsUnderWay({0.5F, 0.2F, 1.0F}, {0.0F, 0.0F, 3.14159265F}), states);
+    for (int row = 0; row < 3; ++row) {
+      EXPECT_TRUE(torch::equal(actions[row], expected[row][step]))
+          << "row " << row << " step " << step;
+    }
+  }
+  EXPECT_TRUE(torch::equal(states.select(1, 1), torch::tensor({0.0F, 2.0F, 2.0F})));
 }
 
 TEST(EnsemblePolicy, TheSecondKeepsTheHelmNearObstaclesOnceStalled) {
@@ -170,17 +202,19 @@ TEST(EnsemblePolicy, TheSecondKeepsTheHelmNearObstaclesOnceStalled) {
 }
 
 TEST(EnsemblePolicy, RefusesARuleItCannotApply) {
-  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(3, {30.0, std::nullopt}); }),
-            "--near-within: takes exactly two policies (the one near obstacles, the other), got 3");
-  EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(2, {150.0, std::nullopt}); }),
+  EXPECT_EQ(UserErrorMessage([] {
+              CheckEnsemble(3, {30.0, std::nullopt});
+            }),
+            "--near-within: takes two policies (the one near obstacles, the other), or more with "
+            "--stall-pace (the later ones relieve at the second stall and after), got 3");
+  EXPECT_NO_THROW(CheckEnsemble(3, {30.0, StallRule{}}));
+  EXPECT_NO_THROW(CheckEnsemble(4, {std::nullopt, StallRule{}}));
+  EXPECT_EQ(UserErrorMessage([] {
+              CheckEnsemble(2, {150.0, std::nullopt});
+            }),
             "--near-within 150: expects metres in (0, 150)");
   EXPECT_EQ(UserErrorMessage([] { CheckEnsemble(1, {}); }),
             "an ensemble needs at least two policies");
-  EXPECT_EQ(UserErrorMessage([] {
-              CheckEnsemble(3, {std::nullopt, StallRule{}});
-            }),
-            "--stall-pace: takes exactly two policies (the one that steers first, the relief), "
-            "got 3");
   EXPECT_EQ(UserErrorMessage([] {
               CheckEnsemble(2, {std::nullopt, StallRule{0.5, 200}});
             }),

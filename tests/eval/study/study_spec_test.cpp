@@ -107,8 +107,9 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   mixed: {members: [shallow_locked, baseline, shallow_locked]}
   pair: {members: [baseline, shallow_log], count: 2, near_within_m: 30.5}
   relieved: {members: [baseline, shallow_log], stall_pace_mps: 0.2, stall_steps: 50}
+  rescued: {members: [baseline, shallow_log, shallow_locked], near_within_m: 20, stall_pace_mps: 0.1}
 )"));
-  ASSERT_EQ(spec.ensembles.size(), 3U);
+  ASSERT_EQ(spec.ensembles.size(), 4U);
   const EnsembleSpec& mixed = spec.ensembles[0];
   EXPECT_EQ(mixed.members,
             (std::vector<std::string>{"shallow_locked", "baseline", "shallow_locked"}));
@@ -127,17 +128,24 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   ASSERT_TRUE(relieved.stall);
   EXPECT_EQ(relieved.stall->pace_mps, 0.2);
   EXPECT_EQ(relieved.stall->steps, 50);
+  // A third member with both rules: a relief at the second stall.
+  const EnsembleSpec& rescued = spec.ensembles[3];
+  EXPECT_EQ(rescued.members.size(), 3U);
+  EXPECT_EQ(rescued.near_within_m, 20.0);
+  ASSERT_TRUE(rescued.stall);
+  EXPECT_EQ(rescued.stall->steps, 200);
+  EXPECT_EQ(rescued.MemberSeed(2, 2), 2);
   EnsembleSpec quad{"quad", {"a", "b", "a", "b"}, 5, std::nullopt, std::nullopt};
   EXPECT_EQ(quad.MemberSeed(2, 3), 8);  // a's seeds 3 and 8, b's 3 and 8 in ensemble 3
   EXPECT_EQ(quad.MemberSeed(3, 3), 8);
   EXPECT_EQ(quad.MaxCount(10), 5);
   const std::vector<SeededModel> models = spec.SeededModels();
-  ASSERT_EQ(models.size(), 6U);
+  ASSERT_EQ(models.size(), 7U);
   EXPECT_EQ(models[3].name, "mixed");
   EXPECT_EQ(models[4].seeds, 2);
   // Fewer seeds, fewer ensembles; a kind whose members are not all kept goes.
   const StudySpec one_seed = SelectConfigs(spec, {}, 1);
-  ASSERT_EQ(one_seed.ensembles.size(), 2U);
+  ASSERT_EQ(one_seed.ensembles.size(), 3U);
   EXPECT_EQ(one_seed.ensembles[0].name, "pair");
   EXPECT_EQ(one_seed.ensembles[0].count, 1);
   EXPECT_TRUE(SelectConfigs(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
@@ -176,9 +184,6 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
        "ensembles.e.near_within_m"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], near_within_m: near}}",
        "ensembles.e.near_within_m"},
-      {"ppo: {seeds: 3, configs: {a: {}}}\nensembles: {e: {members: [a, a, a], stall_pace_mps: "
-       "0.1}}",
-       "ensembles.e.stall_pace_mps"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_pace_mps: 0.5}}",
        "ensembles.e.stall_pace_mps"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_steps: 100}}",
