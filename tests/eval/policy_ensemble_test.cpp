@@ -201,6 +201,30 @@ TEST(EnsemblePolicy, TheSecondKeepsTheHelmNearObstaclesOnceStalled) {
       torch::equal(actions, torch::tensor({1.0F, 0.0F, -1.0F, 0.5F, -1.0F, 0.5F}).view({3, 2})));
 }
 
+// With the range rule too, the third member is a relief only: it steers from the second stall on,
+// near obstacles or not.
+TEST(EnsemblePolicy, WithTheRangeRuleTheThirdMemberStillWaitsForTheSecondStall) {
+  const TemporaryFolder folder;
+  WriteEnsemblePolicy({SaveMember(ConstantPolicy("1.0, 0.0"), folder / "near.pt"),
+                       SaveMember(ConstantPolicy("-1.0, 0.5"), folder / "far.pt"),
+                       SaveMember(ConstantPolicy("0.25, -1.0"), folder / "rescue.pt")},
+                      folder / "ensemble.pt", {30.0, StallRule{0.3, 2}});
+  Policy ensemble(folder / "ensemble.pt", "ensemble");
+  torch::Tensor states = ensemble.InitialStates(4);
+  torch::Tensor obs = ObservationsWithNearestReturns({20.0, 100.0, 20.0, 100.0});
+  // Rows 0 and 1 cruise; rows 2 and 3 run away from the look-ahead point: a stall at each step.
+  obs.slice(1, 0, kNavigationSize) =
+      ObservationsUnderWay({0.5F, 0.5F, 1.0F, 1.0F}, {0.0F, 0.0F, 3.14159265F, 3.14159265F})
+          .slice(1, 0, kNavigationSize);
+  const torch::Tensor first_step = ensemble.Step(obs, states);  // near; far; first stall twice
+  EXPECT_TRUE(torch::equal(
+      first_step, torch::tensor({1.0F, 0.0F, -1.0F, 0.5F, -1.0F, 0.5F, -1.0F, 0.5F}).view({4, 2})));
+  const torch::Tensor second_step = ensemble.Step(obs, states);  // the second stall: the rescue
+  EXPECT_TRUE(torch::equal(
+      second_step,
+      torch::tensor({1.0F, 0.0F, -1.0F, 0.5F, 0.25F, -1.0F, 0.25F, -1.0F}).view({4, 2})));
+}
+
 TEST(EnsemblePolicy, RefusesARuleItCannotApply) {
   EXPECT_EQ(UserErrorMessage([] {
               CheckEnsemble(3, {30.0, std::nullopt});
