@@ -389,16 +389,16 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
 std::string EnsembleRuleText(const EnsembleSpec& ensemble) {
   std::string stall;
   if (ensemble.stall) {
+    // With more than one relief the second keeps the helm only until the next stall.
+    const bool one_relief = ensemble.members.size() == 2;
     stall = fmt::format(
-        "for the rest of the episode once the vessel's pace towards the look-ahead point, averaged "
-        "over {} steps, falls below {} m/s",
-        ensemble.stall->steps, ensemble.stall->pace_mps);
-    if (ensemble.members.size() > 2) {
-      stall += fmt::format(
-          ", each later member from the next stall on (the average restarts at "
-          "each stall; {} reliefs in all)",
-          ensemble.members.size() - 1);
-    }
+        "{} the vessel's pace towards the look-ahead point, averaged over {} steps, falls "
+        "below {} m/s{}",
+        one_relief ? "for the rest of the episode once" : "from the step", ensemble.stall->steps,
+        ensemble.stall->pace_mps,
+        one_relief ? ""
+                   : ", each later member from the next stall on, the last to the episode's "
+                     "end (the average restarts at each stall)");
   }
   if (ensemble.near_within_m) {
     return fmt::format(", the first steering within {} m of an obstacle, the second otherwise{}",
