@@ -112,6 +112,19 @@ sys.exit(0 if a.keys() == b.keys() and all(torch.equal(a[k], b[k]) for k in a) e
 PY
 fi
 
+# A stop within the last rollout, after its steps pass ppo.total_steps but before its update, is a
+# stop like any other: status 75, and the resumed run ends as the uninterrupted one (one rollout of
+# 16,384 steps for a run of 1,000; the signal comes 20 ms after the checkpoint at step 1,000, with
+# 15,000 steps of the rollout to go).
+LAST=("$BIN/train_ppo" --envs 2 --set ppo.n_steps=8192 --set ppo.batch_size=512 --set ppo.n_epochs=1
+  --steps 1000 --set train.checkpoint_interval=1000 --set train.keep_checkpoints=true
+  --set env.max_steps=300 --set train.env_threads=1)
+"${LAST[@]}" --out last_whole >/dev/null 2>&1 || fail "uninterrupted one-rollout train_ppo run failed"
+interrupt TERM last_parts/checkpoints/policy_1000.pt 0.02 "${LAST[@]}" --out last_parts
+"$BIN/train_ppo" --resume last_parts >/dev/null 2>&1 || fail "the resume of the one-rollout run failed"
+same_bytes last_whole/episodes.csv last_parts/episodes.csv
+same_bytes last_whole/policy.pt last_parts/policy.pt
+
 # --- train_vae: 2 seeds of 12 epochs (about 0.05 s per epoch) on a small dataset. A clean stop ends
 # the epoch in progress; a SIGKILL loses it. The SIGKILL comes 0.05 s into the third session, which
 # has 10 epochs of seed 1 left: with fewer, the run could finish first (it did once, at 8 epochs

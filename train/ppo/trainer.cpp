@@ -164,7 +164,8 @@ class PpoTrainer {
     }
     if (!within_rollout) MarkRolloutStart();
     // A stopped run's checkpoint is only the resume point: the uninterrupted run has no copy of it.
-    const bool finished = counters_.global_step >= options_.total_steps;
+    // A stop within the last rollout leaves global_step past total_steps without its update.
+    const bool finished = !within_rollout && counters_.global_step >= options_.total_steps;
     checkpoint(options_.keep_checkpoints && finished);
     progress.Finish();
 
