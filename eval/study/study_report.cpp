@@ -385,8 +385,30 @@ void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
-// How a kind's members share the helm, after its member list ("" for the mean of their actions).
-std::string EnsembleRuleText(const EnsembleSpec& ensemble) {
+// The ensemble kinds and the runs they average, into the report's head and summary.json.
+void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
+  if (spec.ensembles.empty()) return;
+  md << "\nEnsembles, each acting with the mean of its members' deterministic actions (unless "
+        "said otherwise); ensemble k "
+        "of a kind of count n takes seed k + j n of a configuration listed for the j-th time "
+        "(j = 0, 1, ...), so the n ensembles share no run:\n\n";
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    md << fmt::format("- {}: {} of [{}]{}\n", ensemble.name, ensemble.count,
+                      fmt::join(ensemble.members, ", "), DescribeEnsembleRule(ensemble));
+    json["ensembles"][ensemble.name] = {{"members", ensemble.members}, {"count", ensemble.count}};
+    if (ensemble.near_within_m) {
+      json["ensembles"][ensemble.name]["near_within_m"] = *ensemble.near_within_m;
+    }
+    if (ensemble.stall) {
+      json["ensembles"][ensemble.name]["stall_pace_mps"] = ensemble.stall->pace_mps;
+      json["ensembles"][ensemble.name]["stall_steps"] = ensemble.stall->steps;
+    }
+  }
+}
+
+}  // namespace
+
+std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
   std::string stall;
   if (ensemble.stall) {
     // With more than one relief the second keeps the helm only until the next stall.
@@ -406,29 +428,6 @@ std::string EnsembleRuleText(const EnsembleSpec& ensemble) {
   }
   return stall.empty() ? "" : ", the first steering, the second " + stall;
 }
-
-// The ensemble kinds and the runs they average, into the report's head and summary.json.
-void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
-  if (spec.ensembles.empty()) return;
-  md << "\nEnsembles, each acting with the mean of its members' deterministic actions (unless "
-        "said otherwise); ensemble k "
-        "of a kind of count n takes seed k + j n of a configuration listed for the j-th time "
-        "(j = 0, 1, ...), so the n ensembles share no run:\n\n";
-  for (const EnsembleSpec& ensemble : spec.ensembles) {
-    md << fmt::format("- {}: {} of [{}]{}\n", ensemble.name, ensemble.count,
-                      fmt::join(ensemble.members, ", "), EnsembleRuleText(ensemble));
-    json["ensembles"][ensemble.name] = {{"members", ensemble.members}, {"count", ensemble.count}};
-    if (ensemble.near_within_m) {
-      json["ensembles"][ensemble.name]["near_within_m"] = *ensemble.near_within_m;
-    }
-    if (ensemble.stall) {
-      json["ensembles"][ensemble.name]["stall_pace_mps"] = ensemble.stall->pace_mps;
-      json["ensembles"][ensemble.name]["stall_steps"] = ensemble.stall->steps;
-    }
-  }
-}
-
-}  // namespace
 
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config) {

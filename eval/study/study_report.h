@@ -57,6 +57,10 @@ struct ScenarioSetReport {
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config);
 
+/// How an ensemble kind's members share the helm, as the report says it after their list ("" when
+/// they act with the mean of their actions).
+std::string DescribeEnsembleRule(const EnsembleSpec& ensemble);
+
 /// Writes OUT/summary.json and OUT/REPORT.md from the evaluations in OUT/eval/.
 void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, double wall_s);
 

@@ -130,6 +130,33 @@ TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
   EXPECT_EQ(report.ensemble_gains[0].metrics.at("collision").count, 1U);
 }
 
+// The report's words for each way members share the helm: the mean, the range rule, one relief at
+// a stall for good, and later members from later stalls.
+TEST(StudyReportTest, EnsembleRulesAreDescribedAsTheyAct) {
+  const std::string pace =
+      "the vessel's pace towards the look-ahead point, averaged over 200 steps, falls below 0.1 m/s";
+  EnsembleSpec ensemble{"kind", {"near", "far"}, 1, std::nullopt, std::nullopt};
+  EXPECT_EQ(DescribeEnsembleRule(ensemble), "");
+  ensemble.near_within_m = 20.0;
+  EXPECT_EQ(DescribeEnsembleRule(ensemble),
+            ", the first steering within 20 m of an obstacle, the second otherwise");
+  ensemble.stall = StallRule{0.1, 200};
+  EXPECT_EQ(DescribeEnsembleRule(ensemble),
+            ", the first steering within 20 m of an obstacle, the second otherwise and for the "
+            "rest of the episode once " +
+                pace);
+  ensemble.members.push_back("rescue");
+  const std::string later =
+      ", each later member from the next stall on, the last to the episode's end (the average "
+      "restarts at each stall)";
+  EXPECT_EQ(DescribeEnsembleRule(ensemble),
+            ", the first steering within 20 m of an obstacle, the second otherwise and from the "
+            "step " + pace + later);
+  ensemble.near_within_m.reset();
+  EXPECT_EQ(DescribeEnsembleRule(ensemble), ", the first steering, the second from the step " +
+                                                pace + later);
+}
+
 // Where both reach the goal the last step decides; elsewhere, the failures.
 TEST(StudyReportTest, TheProgressComparisonIsSplitWhereBothReachTheGoal) {
   ModelEpisodes a = Episodes({98, 60, 99}, {10, 10, 10}, {0, 0, 0});
