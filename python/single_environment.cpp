@@ -83,6 +83,7 @@ py::dict SingleEnvironment::State() const {
   state["heading_error"] = navigation.heading_error;
   state["look_ahead_heading_error"] = navigation.look_ahead_heading_error;
   state["progress"] = navigation.progress;
+  state["path_length"] = world.path().length();
   state["collision"] = world.collision();
   state["ranges"] = DoubleArray(world.ranges());
   return state;

@@ -41,8 +41,9 @@ class SingleEnvironment {
   py::tuple Step(const py::object& action);
 
   /// {"vessel": [x, y, psi, u, v, r], "cross_track_error", "heading_error",
-  /// "look_ahead_heading_error", "progress", "collision", "ranges": [180]}: the world after the
-  /// last reset or step (the columns of a `simulate` trace).
+  /// "look_ahead_heading_error", "progress", "path_length", "collision", "ranges": [180]}: the
+  /// world after the last reset or step (the columns of a `simulate` trace, and the path's length
+  /// L, so that L (1 - progress) is the path left).
   py::dict State() const;
 
   /// The scene now (the episode's track so far) as a height x width x 3 uint8 array, drawn as

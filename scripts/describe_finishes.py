@@ -19,9 +19,13 @@ those scenarios where the prediction names the winner.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/describe_finishes.py \\
         NAME=POLICY.pt [NAME=POLICY.pt ...] [--episodes 1000] [--seed 1] [--scenario FILE ...] \\
-        [--out finishes.csv]
+        [--turn-away NAME=METRES ...] [--out finishes.csv]
 
 --scenario FILE replays scenario files instead (repeatable). --out writes one row per episode.
+--turn-away NAME=METRES tests that reading: in the last METRES of path agent NAME's rudder is held
+hard over away from the path (its thrust stays its own), so that it enters the goal circle from
+the side. A probe of the metric, not a way to steer; list a policy twice under two names to
+compare it with itself.
 Bad input: one line naming the argument or file, exit status 2.
 """
 
@@ -62,10 +66,35 @@ def agents(items):
     return named
 
 
-def finishes(policy, scenarios):
+def turn_aways(items, named):
+    """{name: metres} from NAME=METRES items naming agents of `named`."""
+    metres = {}
+    for item in items:
+        name, mark, value = item.partition("=")
+        if not mark or name not in named:
+            fail(f"--turn-away '{item}': expected NAME=METRES with NAME one of the agents")
+        try:
+            metres[name] = float(value)
+        except ValueError:
+            metres[name] = math.nan
+        if not metres[name] > 0.0:
+            fail(f"--turn-away '{item}': METRES must be a number above 0")
+    return metres
+
+
+def turn_away(action, state, turn_away_m):
+    """`action` with its rudder hard over away from the path in the last `turn_away_m` metres."""
+    if state["path_length"] * (1.0 - state["progress"]) < turn_away_m:
+        action = action.copy()
+        action[1] = -math.copysign(1.0, state["cross_track_error"])
+    return action
+
+
+def finishes(policy, scenarios, turn_away_m=0.0):
     """Each scenario played to its end under the policy, all at once: one row per scenario
     (goal, progress, path length, side offset and metres of path left at the last step, and the
-    metres left that the side offset predicts)."""
+    metres left that the side offset predicts); with `turn_away_m`, turned away from the path
+    over that many metres before its end."""
     envs = [colav.make(scenario=scenario, test_mode=True, **policy.observation_settings)
             for scenario in scenarios]
     obs = np.stack([env.reset()[0] for env in envs])
@@ -76,6 +105,8 @@ def finishes(policy, scenarios):
         actions = policy.act(obs, starts, worlds=playing)
         starts[:] = False
         for k, action in zip(playing, actions):
+            if turn_away_m > 0.0:
+                action = turn_away(action, envs[k].state(), turn_away_m)
             obs[k], _, terminated, truncated, info = envs[k].step(action)
             if terminated or truncated:
                 metrics = info["episode_metrics"]
@@ -134,10 +165,13 @@ def main():
     parser.add_argument("--seed", type=int, default=1, help="master seed of the test scenarios")
     parser.add_argument("--scenario", action="append", default=[],
                         help="scenario file to replay instead (repeatable)")
+    parser.add_argument("--turn-away", action="append", default=[], metavar="NAME=METRES",
+                        help="turn agent NAME away from the path over its last METRES (repeatable)")
     parser.add_argument("--out", help="CSV of every episode")
     args = parser.parse_args()
 
     named = agents(args.agents)
+    turned = turn_aways(args.turn_away, named)
     if args.episodes < 1:
         fail(f"--episodes {args.episodes}: expected at least 1")
     if args.seed < 0:
@@ -152,10 +186,13 @@ def main():
         fail(str(error))
     labels = args.scenario or [str(s) for s in colav.evaluation_scenario_seeds(args.episodes,
                                                                                args.seed)]
-    results = {name: finishes(policy, scenarios) for name, policy in policies.items()}
+    results = {name: finishes(policy, scenarios, turned.get(name, 0.0))
+               for name, policy in policies.items()}
     print("agent: goals; at the goal, |cross-track error| and metres of path left (mean, median)")
     for name, rows in results.items():
         at_goal = [row for row in rows if row["goal"]]
+        if name in turned:
+            print(f"  {name} turns away from the path over its last {turned[name]:g} m")
         if not at_goal:
             print(f"  {name}: 0 of {len(rows)}")
             continue

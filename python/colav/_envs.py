@@ -189,7 +189,8 @@ class Env(_EnvBase):
 
     def state(self):
         """{"vessel": [x, y, psi, u, v, r], "cross_track_error", "heading_error",
-        "look_ahead_heading_error", "progress", "collision", "ranges": [180] (m)}."""
+        "look_ahead_heading_error", "progress", "path_length" (m), "collision", "ranges": [180]
+        (m)}."""
         return self._core.state()
 
     def render(self):

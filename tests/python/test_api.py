@@ -100,6 +100,20 @@ def test_single_env_refuses_step_after_episode_end():
         env.step([1.0, 0.0])
 
 
+def test_single_env_state_gives_the_path_length_its_progress_is_a_share_of():
+    env = colav.make(max_steps=50)
+    env.reset(seed=1)
+    length = env.state()["path_length"]
+    assert 200.0 < length < 1000.0  # random paths of about 300 m, between circles and corners
+    done = False
+    while not done:
+        *_, terminated, truncated, info = env.step([1.0, 0.0])
+        done = terminated or truncated
+        assert env.state()["path_length"] == length
+    metrics = info["episode_metrics"]
+    assert metrics["path_length"] == length and metrics["progress"] == env.state()["progress"]
+
+
 def test_vector_env_refuses_step_before_reset():
     with pytest.raises(RuntimeError, match="reset"):
         colav.make_vec(2).step(np.zeros((2, 2), dtype=np.float32))

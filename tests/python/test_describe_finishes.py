@@ -1,6 +1,7 @@
 """scripts/describe_finishes.py: on a straight 100 m path a vessel held on course reaches the 5 m
 goal circle 5 m before the path's end when it runs on the path and sqrt(25 - 4^2) = 3 m before it
-when it runs 4 m beside it; the pair comparison counts only the scenarios both agents finish."""
+when it runs 4 m beside it; the pair comparison counts only the scenarios both agents finish; an
+agent turned away from the path over its last metres enters the circle farther along."""
 
 import csv
 import importlib.util
@@ -8,6 +9,7 @@ import math
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 import torch
 
@@ -89,12 +91,47 @@ def test_the_comparison_at_the_goal_by_hand():
     assert compare_at_goal(a, b) == (2, 0.5, 1.0, 0.5)
 
 
+def test_turning_away_from_the_path_enters_the_goal_circle_from_the_side(tmp_path):
+    """The same policy 2 m beside the path, plain and turned away over its last 10 m: turned, it
+    enters the circle farther beside the path, nearer the end, and wins the comparison."""
+    policy = tmp_path / "full.pt"
+    torch.jit.script(HeldAction(1.0, 0.0)).save(str(policy))
+    result = run(f"plain={policy}", f"turned={policy}", "--turn-away", "turned=10",
+                 "--scenario", straight_path_scenario(tmp_path, "beside", 2.0),
+                 "--out", tmp_path / "finishes.csv")
+    assert result.returncode == 0, result.stderr
+    with open(tmp_path / "finishes.csv", newline="") as file:
+        plain, turned = list(csv.DictReader(file))
+    assert plain["goal"] == turned["goal"] == "1"
+    assert float(plain["side_offset_m"]) == pytest.approx(2.0, abs=1e-6)
+    assert float(turned["side_offset_m"]) > 3.0
+    assert float(turned["short_of_end_m"]) < float(plain["short_of_end_m"]) - 0.5
+    assert "  turned turns away from the path over its last 10 m" in result.stdout
+    assert "  plain over turned: 1 scenarios; 0.000" in result.stdout
+
+
+def test_the_turn_away_by_hand():
+    turn_away = load_script().turn_away
+    action = np.array([0.7, 0.2], dtype=np.float32)
+    near_end = {"path_length": 100.0, "progress": 0.95}  # 5 m of path left
+    assert list(turn_away(action, {**near_end, "cross_track_error": 2.0}, 10.0)) == \
+        pytest.approx([0.7, -1.0])
+    assert list(turn_away(action, {**near_end, "cross_track_error": -2.0}, 10.0)) == \
+        pytest.approx([0.7, 1.0])
+    assert list(turn_away(action, {**near_end, "cross_track_error": 2.0}, 4.0)) == \
+        pytest.approx([0.7, 0.2])
+    assert list(action) == pytest.approx([0.7, 0.2])  # the policy's action is left as it was
+
+
 @pytest.mark.parametrize("args, message", [
     (["policy.pt"], "'policy.pt': expected NAME=POLICY.pt"),
     (["a=missing.pt"], "missing.pt: no such policy file"),
     (["a={p}", "a={p}"], "the name 'a' is given twice"),
     (["a={p}", "--episodes", "0"], "--episodes 0: expected at least 1"),
     (["a={p}", "--out", "no/such/folder/x.csv"], "no/such/folder/x.csv: no such folder"),
+    (["a={p}", "--turn-away", "b=10"], "--turn-away 'b=10': expected NAME=METRES with NAME one"),
+    (["a={p}", "--turn-away", "a=-1"], "--turn-away 'a=-1': METRES must be a number above 0"),
+    (["a={p}", "--turn-away", "a=far"], "--turn-away 'a=far': METRES must be a number above 0"),
 ])
 def test_bad_input_is_one_line_and_status_2(tmp_path, args, message):
     policy = tmp_path / "p.pt"
