@@ -406,6 +406,16 @@ void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// The configuration `model` is compared with: its own compare_to, else `study_reference`.
+const std::string& ComparedWith(const StudySpec& spec, const std::string& model,
+                                const std::string& study_reference) {
+  const auto config =
+      std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                   [&](const PpoConfigSpec& c) { return c.name == model; });
+  return config != spec.ppo_configs.end() && !config->compare_to.empty() ? config->compare_to
+                                                                          : study_reference;
+}
+
 }  // namespace
 
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
@@ -441,11 +451,12 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
     }
     report.models.push_back(summary);
   }
-  const auto reference = std::find_if(groups.begin(), groups.end(),
-                                      [&](const auto& g) { return g.first == reference_config; });
   for (const SeededModel& model : spec.SeededModels()) {
     const auto& seeds = *std::find_if(groups.begin(), groups.end(),
                                       [&](const auto& g) { return g.first == model.name; });
+    const std::string& compared_with = ComparedWith(spec, model.name, reference_config);
+    const auto reference = std::find_if(groups.begin(), groups.end(),
+                                        [&](const auto& g) { return g.first == compared_with; });
     for (const auto& other : groups) {
       const bool is_reference = reference != groups.end() && other.first == reference->first;
       if (other.first == model.name || !(is_reference || other.first.rfind("ref.", 0) == 0)) {

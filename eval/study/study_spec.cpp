@@ -146,7 +146,7 @@ PpoConfigSpec ReadPpoConfig(const Reader& reader, const YAML::Node& name, const 
   PpoConfigSpec config;
   const std::string key = "ppo.configs." + name.as<std::string>();
   config.name = reader.Name(name, key);
-  reader.RequireMap(node, key, {"extractor", "vae", "locked", "set", "steps"});
+  reader.RequireMap(node, key, {"extractor", "vae", "locked", "set", "steps", "compare_to"});
   if (node["extractor"]) {
     config.extractor = reader.Choice(node["extractor"], key + ".extractor",
                                      {"baseline", "vae-shallow", "vae-deep"});
@@ -154,6 +154,7 @@ PpoConfigSpec ReadPpoConfig(const Reader& reader, const YAML::Node& name, const 
   if (node["locked"]) config.locked = reader.Bool(node["locked"], key + ".locked");
   config.overrides = reader.OverridesOf(node["set"], key + ".set");
   if (node["steps"]) config.steps = reader.Integer(node["steps"], key + ".steps", 1, kMaxPpoSteps);
+  if (node["compare_to"]) config.compare_to = reader.Name(node["compare_to"], key + ".compare_to");
   if (config.extractor == "baseline") {
     if (node["vae"]) reader.Fail(key + ".vae", "the baseline extractor uses no VAE");
     return config;
@@ -344,13 +345,23 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
   const std::vector<SeededModel> models = spec.SeededModels();
-  const bool compares = std::any_of(models.begin(), models.end(), [&](const SeededModel& m) {
-    return m.name == spec.evaluation.compare_to;
-  });
-  if (root["evaluation"] && root["evaluation"]["compare_to"] && !compares) {
-    reader.Fail("evaluation.compare_to", "'" + spec.evaluation.compare_to +
-                                             "' is not a PPO configuration or ensemble of the "
-                                             "study");
+  const auto check_compared_with = [&](const std::string& name, const std::string& key) {
+    const bool known = std::any_of(models.begin(), models.end(),
+                                   [&](const SeededModel& m) { return m.name == name; });
+    if (!known) {
+      reader.Fail(key, "'" + name + "' is not a PPO configuration or ensemble of the study");
+    }
+  };
+  if (root["evaluation"] && root["evaluation"]["compare_to"]) {
+    check_compared_with(spec.evaluation.compare_to, "evaluation.compare_to");
+  }
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    if (config.compare_to.empty()) continue;
+    const std::string key = "ppo.configs." + config.name + ".compare_to";
+    if (config.compare_to == config.name) {
+      reader.Fail(key, "a configuration is not compared with itself");
+    }
+    check_compared_with(config.compare_to, key);
   }
   return spec;
 }

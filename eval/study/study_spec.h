@@ -13,6 +13,7 @@
 //     configs:
 //       shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
 //       baseline: {extractor: baseline}
+//       shallow_log: {extractor: vae-shallow, vae: shallow, compare_to: shallow_locked}
 //   ensembles:                                      # agents averaging several runs' actions
 //     two_shallow: {members: [shallow_locked, shallow_locked], count: 2}
 //   evaluation:
@@ -55,6 +56,9 @@ struct PpoConfigSpec {
   Overrides overrides;  ///< after the study-wide ones
   /// Environment steps of each run; 0: the study's ppo.steps (longer training, paired with it).
   std::int64_t steps = 0;
+  /// The configuration or ensemble this one is compared with; empty: evaluation.compare_to (so a
+  /// study can hold variants of several recipes, each compared with its own).
+  std::string compare_to{};
 };
 
 /// A kind of ensemble: agents acting with the mean of several of the study's runs' actions
@@ -93,7 +97,8 @@ struct EvaluationSpec {
   int paper_episodes = 100;  ///< on master seed 0, for the paper's table; 0 = none
   std::vector<std::filesystem::path> reference_agents;
   std::filesystem::path paper_results;  ///< the paper's table (YAML); empty = none
-  /// The configuration every other one is compared with (probability of improvement).
+  /// The configuration every other one is compared with (probability of improvement), unless
+  /// it names its own (PpoConfigSpec::compare_to).
   std::string compare_to = "baseline";
 };
 

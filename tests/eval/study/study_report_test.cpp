@@ -97,6 +97,31 @@ TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   EXPECT_EQ(report.agents_among_seeds[1].config, "baseline");
 }
 
+// A configuration that names its own compare_to is compared with that one, not the study's.
+TEST(StudyReportTest, AConfigurationIsComparedWithItsOwnReference) {
+  StudySpec spec;
+  spec.ppo_seeds = 1;
+  spec.ppo_configs = {{"cnn", "baseline", "", true, {}},
+                      {"cnn_variant", "baseline", "", true, {}, 0, "cnn"},
+                      {"other", "baseline", "", true, {}}};
+  ScenarioSetResults results;
+  results.episodes = 4;
+  results.models["cnn.seed_0"] = Episodes({80, 80, 80, 80}, {30, 30, 30, 30}, {0, 0, 0, 0});
+  results.models["cnn_variant.seed_0"] = Episodes({90, 70, 90, 80}, {20, 40, 20, 30}, {0, 0, 0, 0});
+  results.models["other.seed_0"] = Episodes({60, 60, 60, 60}, {50, 50, 50, 50}, {0, 0, 0, 0});
+  const ScenarioSetReport report = SummariseScenarioSet(spec, results, "other");
+  // cnn over the study's "other"; cnn_variant over its own "cnn" only; "other" over nothing.
+  ASSERT_EQ(report.improvements.size(), 2U);
+  EXPECT_EQ(report.improvements[0].model, "cnn");
+  EXPECT_EQ(report.improvements[0].over, "other");
+  EXPECT_EQ(report.improvements[1].model, "cnn_variant");
+  EXPECT_EQ(report.improvements[1].over, "cnn");
+  // Progress against cnn per scenario: a win, a loss, a win, a tie.
+  EXPECT_DOUBLE_EQ(report.improvements[1].metrics.at("progress").probability, 2.5 / 4.0);
+  // Cross-track error, lower is better: the same pattern.
+  EXPECT_DOUBLE_EQ(report.improvements[1].metrics.at("cross_track_error").probability, 2.5 / 4.0);
+}
+
 // An ensemble kind is summarised over its ensembles and compared as a configuration is.
 TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
   StudySpec spec;

@@ -29,7 +29,12 @@ ppo:
   set: {ppo.n_envs: 2}
   configs:
     shallow_locked: {extractor: vae-shallow, vae: shallow, locked: true}
-    shallow_log: {extractor: vae-shallow, vae: shallow, set: {env.closeness: log}, steps: 8192}
+    shallow_log:
+      extractor: vae-shallow
+      vae: shallow
+      set: {env.closeness: log}
+      steps: 8192
+      compare_to: shallow_locked
     baseline: {extractor: baseline}
 evaluation: {episodes: 20, seed: 4, paper_episodes: 0}
 )";
@@ -54,6 +59,8 @@ TEST(StudySpecTest, ReadsEverySection) {
   EXPECT_EQ(spec.evaluation.seed, 4U);
   EXPECT_EQ(spec.evaluation.paper_episodes, 0);
   EXPECT_EQ(spec.evaluation.compare_to, "baseline");
+  EXPECT_EQ(spec.ppo_configs[0].compare_to, "");  // the study's
+  EXPECT_EQ(spec.ppo_configs[1].compare_to, "shallow_locked");
   EXPECT_FALSE(spec.vae_figures);
 }
 
@@ -169,6 +176,9 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"ppo: {configs: {'a/b': {}}}", "ppo.configs.a/b"},
       {"vaes: {s: {}}", "ppo"},
       {"ppo: {configs: {a: {}}}\nevaluation: {compare_to: b}", "evaluation.compare_to"},
+      {"ppo: {configs: {a: {compare_to: b}}}", "ppo.configs.a.compare_to"},
+      {"ppo: {configs: {a: {compare_to: a}}}", "ppo.configs.a.compare_to"},
+      {"ppo: {configs: {a: {compare_to: [b]}}}", "ppo.configs.a.compare_to"},
       {"ppo: {configs: {a: {}}}\nvae_figures: often", "vae_figures"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a]}}", "ensembles.e.members"},
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, b]}}", "ensembles.e.members[1]"},
