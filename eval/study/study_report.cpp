@@ -409,11 +409,10 @@ void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySp
 // The configuration `model` is compared with: its own compare_to, else `study_reference`.
 const std::string& ComparedWith(const StudySpec& spec, const std::string& model,
                                 const std::string& study_reference) {
-  const auto config =
-      std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                   [&](const PpoConfigSpec& c) { return c.name == model; });
+  const auto config = std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                                   [&](const PpoConfigSpec& c) { return c.name == model; });
   return config != spec.ppo_configs.end() && !config->compare_to.empty() ? config->compare_to
-                                                                          : study_reference;
+                                                                         : study_reference;
 }
 
 }  // namespace
