@@ -52,9 +52,8 @@ struct ScenarioSetReport {
 /// The report of one scenario set: configurations (models "<config>.seed_<k>") summarised over
 /// their seeds, other models over scenarios; the probability of improvement of every
 /// configuration over its own compare_to or else `reference_config` (if present) and over each
-/// single model; where each
-/// single model falls among the seeds of each configuration of two or more seeds; what each
-/// ensemble kind gains over its own members.
+/// single model; where each single model falls among the seeds of each configuration of two or
+/// more seeds; what each ensemble kind gains over its own members.
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config);
 
