@@ -5,6 +5,18 @@
 #include "src/statistics.h"
 
 namespace colav {
+namespace {
+
+// Were the agent one more of our n = `seeds` seeds, its rank among the n + 1 would be uniform: the
+// chance that at most `better` of ours beat it is (better + 1) / (n + 1). Ties count on both
+// sides, which makes the test conservative.
+double RankP(int better, int worse, int seeds) {
+  const int ties = seeds - better - worse;
+  const int nearest_side = std::min(better, worse) + ties + 1;
+  return std::min(1.0, 2.0 * nearest_side / (seeds + 1));
+}
+
+}  // namespace
 
 AgentAmongSeeds PlaceAmongSeeds(const std::string& config,
                                 const std::vector<const ModelEpisodes*>& seeds,
@@ -22,10 +34,17 @@ AgentAmongSeeds PlaceAmongSeeds(const std::string& config,
     }
     place.inside = place.prediction.low <= place.value && place.value <= place.prediction.high;
     place.seeds = static_cast<int>(seed_means.size());
-    place.seeds_better =
-        static_cast<int>(std::count_if(seed_means.begin(), seed_means.end(), [&](double seed_mean) {
-          return metric.higher_is_better ? seed_mean > place.value : seed_mean < place.value;
-        }));
+    const auto count_seeds = [&](bool better) {
+      return static_cast<int>(
+          std::count_if(seed_means.begin(), seed_means.end(), [&](double seed_mean) {
+            const bool higher = seed_mean > place.value;
+            const bool lower = seed_mean < place.value;
+            return metric.higher_is_better == better ? higher : lower;
+          }));
+    };
+    place.seeds_better = count_seeds(true);
+    place.seeds_worse = count_seeds(false);
+    place.rank_p = RankP(place.seeds_better, place.seeds_worse, place.seeds);
   }
   return placement;
 }

@@ -6,7 +6,8 @@
 // the two. The question asked here is the other way round: could the agent have been one more
 // seed of the configuration? Per metric: the 95 % prediction interval for one more seed's mean
 // (src/statistics.h; it assumes the seeds' means spread normally), whether the agent lies
-// inside, and how many of the seeds did better than it.
+// inside, how many of the seeds did better than it, and a rank test that assumes nothing about
+// the spread: were the agent one more seed, its rank among the n + 1 would be uniform.
 #pragma once
 
 #include <map>
@@ -23,7 +24,12 @@ struct SeedPlacement {
   Interval prediction;   ///< for one more seed's mean; for bounded metrics clipped to [0, scale]
   bool inside = false;   ///< value within `prediction`
   int seeds_better = 0;  ///< seeds whose mean is strictly better than the agent's
+  int seeds_worse = 0;   ///< seeds whose mean is strictly worse than the agent's
   int seeds = 0;
+  /// Two-sided rank test of "the agent is one more seed": twice the chance that one more seed
+  /// ranks at least as far out on the agent's side among the n + 1, ties counted against the
+  /// test, at most 1. Its least value is 2 / (n + 1): below 0.05 needs 39 seeds or more.
+  double rank_p = 1.0;
 };
 
 struct AgentAmongSeeds {

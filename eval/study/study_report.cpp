@@ -163,7 +163,9 @@ nlohmann::json ToJson(const ScenarioSetReport& report) {
                        {"prediction_high", place.prediction.high},
                        {"inside", place.inside},
                        {"seeds_better", place.seeds_better},
-                       {"seeds", place.seeds}};
+                       {"seeds_worse", place.seeds_worse},
+                       {"seeds", place.seeds},
+                       {"rank_p", place.rank_p}};
     }
     json["agents_among_seeds"].push_back(
         {{"config", row.config}, {"agent", row.agent}, {"metrics", metrics}});
@@ -199,9 +201,9 @@ std::string Cell(const MeanConfidenceInterval& difference) {
 }
 
 std::string Cell(const SeedPlacement& place) {
-  return fmt::format("{:.1f} {} [{:.1f}, {:.1f}], {} of {} better", place.value,
+  return fmt::format("{:.1f} {} [{:.1f}, {:.1f}], {} of {} better, rank p {:.2f}", place.value,
                      place.inside ? "in" : "**out of**", place.prediction.low,
-                     place.prediction.high, place.seeds_better, place.seeds);
+                     place.prediction.high, place.seeds_better, place.seeds, place.rank_p);
 }
 
 // " | a | b" for the metrics `names` of `metrics`, each through its Cell.
@@ -255,7 +257,10 @@ void AgentsAmongSeedsTable(std::ostringstream& md, const ScenarioSetReport& repo
   md << "\nCould each single agent have been one more training seed of a configuration? Its "
         "mean, the configuration's 95 % prediction interval for one more seed's mean (Student-t "
         "over the seeds' means, assuming they spread normally: mean +- t sd sqrt(1 + 1/n)), and "
-        "how many of the seeds did better than the agent. A single agent is one seed of its own "
+        "how many of the seeds did better than the agent, with a rank test that assumes no "
+        "shape of the spread (rank p: twice the chance that one more seed of ours would rank at "
+        "least as far out among the n + 1, ties counted against the test; it cannot fall below "
+        "2 / (n + 1), so 0.05 needs 39 seeds). A single agent is one seed of its own "
         "recipe, so its interval over the scenarios does not hold another seed of that "
         "recipe.\n\n"
         "| configuration | agent | progress % | cte m | collisions % |\n|---|---|---|---|---|\n";

@@ -261,19 +261,47 @@ TEST(StudyReportTest, WhereASingleAgentFallsAmongTheSeeds) {
   EXPECT_NEAR(cte.prediction.high, 20.0 + t * 10.0 * std::sqrt(4.0 / 3.0), 1e-6);
   EXPECT_TRUE(cte.inside);
   EXPECT_EQ(cte.seeds_better, 1);  // only the 10 m seed keeps closer to the path
+  EXPECT_EQ(cte.seeds_worse, 2);
   EXPECT_EQ(cte.seeds, 3);
+  // Ranked second of 4: at most one of ours better with chance 2/4, twice that, capped.
+  EXPECT_DOUBLE_EQ(cte.rank_p, 1.0);
   const SeedPlacement& progress = row.metrics.at("progress");
   EXPECT_DOUBLE_EQ(progress.value, 99.0);
   EXPECT_NEAR(progress.prediction.low, 99.0 - t * std::sqrt(4.0 / 3.0), 1e-6);
   EXPECT_DOUBLE_EQ(progress.prediction.high, 100.0);  // clipped
   EXPECT_TRUE(progress.inside);
   EXPECT_EQ(progress.seeds_better, 1);  // the tie at 99 % does not count
+  EXPECT_EQ(progress.seeds_worse, 1);
+  EXPECT_DOUBLE_EQ(progress.rank_p, 1.0);  // the tie counts on both sides: 2 * 3/4, capped
   const SeedPlacement& collision = row.metrics.at("collision");
   EXPECT_DOUBLE_EQ(collision.value, 50.0);
   EXPECT_DOUBLE_EQ(collision.prediction.low, 0.0);
   EXPECT_DOUBLE_EQ(collision.prediction.high, 0.0);
   EXPECT_FALSE(collision.inside);
   EXPECT_EQ(collision.seeds_better, 3);
+  EXPECT_EQ(collision.seeds_worse, 0);
+  // Worse than every seed: one more seed does this badly with chance 1/4; two-sided 2/4, the
+  // least three seeds can give.
+  EXPECT_DOUBLE_EQ(collision.rank_p, 0.5);
+}
+
+// Twenty seeds at 20, 21, ..., 39 m and an agent at 20.5 m, beaten by one seed: were it one more
+// seed, at most one of ours would beat it with chance 2/21; two-sided, 4/21.
+TEST(StudyReportTest, RankTestOfASingleAgentAmongManySeeds) {
+  StudySpec spec;
+  spec.ppo_seeds = 20;
+  spec.ppo_configs = {{"mine", "baseline", "", true, {}}};
+  ScenarioSetResults results;
+  results.episodes = 1;
+  for (int k = 0; k < 20; ++k) {
+    results.models["mine.seed_" + std::to_string(k)] = Episodes({99}, {20.0 + k}, {0});
+  }
+  results.models["ref.agent"] = Episodes({99}, {20.5}, {0});
+  const ScenarioSetReport report = SummariseScenarioSet(spec, results, "");
+  const SeedPlacement& cte = report.agents_among_seeds.at(0).metrics.at("cross_track_error");
+  EXPECT_EQ(cte.seeds_better, 1);
+  EXPECT_EQ(cte.seeds_worse, 19);
+  EXPECT_DOUBLE_EQ(cte.rank_p, 4.0 / 21.0);
 }
 
 // Two seeds, three scenarios: seed 0 collides at 40 % and times out at 20 % on scenario 1, seed 1
