@@ -27,6 +27,14 @@ ModelEpisodes Episodes(std::vector<double> progress, std::vector<double> cte,
           {"return", episode_return}};
 }
 
+// A study of one configuration, "mine", of `seeds` training seeds.
+StudySpec OneConfiguration(int seeds) {
+  StudySpec spec;
+  spec.ppo_seeds = seeds;
+  spec.ppo_configs = {{"mine", "baseline", "", true, {}}};
+  return spec;
+}
+
 TEST(StudyReportTest, SummariesOverSeedsAndScenariosAndImprovement) {
   StudySpec spec;
   spec.ppo_seeds = 2;
@@ -241,9 +249,7 @@ TEST(StudyReportTest, AnEnsembleIsComparedWithItsOwnMembers) {
 // t(0.975, 2) * 10 * sqrt(4 / 3) = 20 +- 49.68 m; progress 98, 99 and 100 % (sd 1) within 99 +-
 // 4.97, clipped at 100; collisions 0 % on every seed, a zero-width interval.
 TEST(StudyReportTest, WhereASingleAgentFallsAmongTheSeeds) {
-  StudySpec spec;
-  spec.ppo_seeds = 3;
-  spec.ppo_configs = {{"mine", "baseline", "", true, {}}};
+  const StudySpec spec = OneConfiguration(3);
   ScenarioSetResults results;
   results.episodes = 2;
   results.models["mine.seed_0"] = Episodes({98, 98}, {10, 10}, {0, 0});
@@ -288,9 +294,7 @@ TEST(StudyReportTest, WhereASingleAgentFallsAmongTheSeeds) {
 // Twenty seeds at 20, 21, ..., 39 m and an agent at 20.5 m, beaten by one seed: were it one more
 // seed, at most one of ours would beat it with chance 2/21; two-sided, 4/21.
 TEST(StudyReportTest, RankTestOfASingleAgentAmongManySeeds) {
-  StudySpec spec;
-  spec.ppo_seeds = 20;
-  spec.ppo_configs = {{"mine", "baseline", "", true, {}}};
+  const StudySpec spec = OneConfiguration(20);
   ScenarioSetResults results;
   results.episodes = 1;
   for (int k = 0; k < 20; ++k) {
