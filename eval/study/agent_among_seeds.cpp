@@ -34,16 +34,12 @@ AgentAmongSeeds PlaceAmongSeeds(const std::string& config,
     }
     place.inside = place.prediction.low <= place.value && place.value <= place.prediction.high;
     place.seeds = static_cast<int>(seed_means.size());
-    const auto count_seeds = [&](bool better) {
-      return static_cast<int>(
-          std::count_if(seed_means.begin(), seed_means.end(), [&](double seed_mean) {
-            const bool higher = seed_mean > place.value;
-            const bool lower = seed_mean < place.value;
-            return metric.higher_is_better == better ? higher : lower;
-          }));
-    };
-    place.seeds_better = count_seeds(true);
-    place.seeds_worse = count_seeds(false);
+    const auto higher = static_cast<int>(std::count_if(
+        seed_means.begin(), seed_means.end(), [&](double mean) { return mean > place.value; }));
+    const auto lower = static_cast<int>(std::count_if(
+        seed_means.begin(), seed_means.end(), [&](double mean) { return mean < place.value; }));
+    place.seeds_better = metric.higher_is_better ? higher : lower;
+    place.seeds_worse = metric.higher_is_better ? lower : higher;
     place.rank_p = RankP(place.seeds_better, place.seeds_worse, place.seeds);
   }
   return placement;
