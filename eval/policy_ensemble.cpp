@@ -139,8 +139,7 @@ ObservationSettings CommonSettings(const std::vector<Policy>& members) {
 void CheckEnsemble(std::size_t members, const EnsembleRule& rule) {
   if (members < 2) throw UserError("an ensemble needs at least two policies");
   if (rule.near_within_m) {
-    // The range rule shares the helm between two; further members can only be reliefs.
-    if (members != 2 && !rule.stall) {
+    if (!RangeRuleFits(members, rule.stall.has_value())) {
       throw UserError(fmt::format(
           "--near-within: takes two policies (the one near obstacles, the other), or more with "
           "--stall-pace (the later ones relieve at the second stall and after), got {}",

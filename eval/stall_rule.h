@@ -4,6 +4,8 @@
 // steers. Kept apart from the ensemble, which needs LibTorch, so that study files can name a rule.
 #pragma once
 
+#include <cstddef>
+
 namespace colav {
 
 /// The pace average's value at an episode's start (m/s), about our agents' cruising speed (the
@@ -22,5 +24,12 @@ struct StallRule {
   double pace_mps = 0.1;
   int steps = 200;
 };
+
+/// Whether an ensemble of `members` policies may take the range rule (near_within_m): that rule
+/// shares the helm between two, so members beyond two can only be reliefs, which need a stall
+/// rule.
+inline bool RangeRuleFits(std::size_t members, bool has_stall_rule) {
+  return members == 2 || has_stall_rule;
+}
 
 }  // namespace colav

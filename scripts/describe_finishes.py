@@ -51,13 +51,20 @@ def fail(message):
     sys.exit(2)
 
 
+def name_value(item, form, option="", names=None):
+    """NAME and VALUE of a NAME=VALUE item, both non-empty and NAME one of `names` when given;
+    else fail, naming the item (after `option`) and the `form` expected."""
+    name, mark, value = item.partition("=")
+    if not mark or not name or not value or (names is not None and name not in names):
+        fail(f"{option}'{item}': expected {form}")
+    return name, value
+
+
 def agents(items):
     """{name: policy path} from NAME=PATH items, in their order."""
     named = {}
     for item in items:
-        name, mark, path = item.partition("=")
-        if not mark or not name or not path:
-            fail(f"'{item}': expected NAME=POLICY.pt")
+        name, path = name_value(item, "NAME=POLICY.pt")
         if name in named:
             fail(f"'{item}': the name '{name}' is given twice")
         if not os.path.isfile(path):
@@ -70,9 +77,8 @@ def turn_aways(items, named):
     """{name: metres} from NAME=METRES items naming agents of `named`."""
     metres = {}
     for item in items:
-        name, mark, value = item.partition("=")
-        if not mark or name not in named:
-            fail(f"--turn-away '{item}': expected NAME=METRES with NAME one of the agents")
+        name, value = name_value(item, "NAME=METRES with NAME one of the agents", "--turn-away ",
+                                 named)
         try:
             metres[name] = float(value)
         except ValueError:

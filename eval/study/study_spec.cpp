@@ -227,8 +227,7 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
                                               spec.ppo_seeds));
   }
   if (node["near_within_m"]) {
-    // The range rule shares the helm between two; further members can only be reliefs.
-    if (ensemble.members.size() != 2 && !node["stall_pace_mps"]) {
+    if (!RangeRuleFits(ensemble.members.size(), node["stall_pace_mps"].IsDefined())) {
       reader.Fail(key + ".near_within_m",
                   "takes two members (the one near obstacles, the other), or more with "
                   "stall_pace_mps (the later ones relieve at the second stall and after)");

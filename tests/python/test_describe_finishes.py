@@ -125,11 +125,13 @@ def test_the_turn_away_by_hand():
 
 @pytest.mark.parametrize("args, message", [
     (["policy.pt"], "'policy.pt': expected NAME=POLICY.pt"),
+    (["=p.pt"], "'=p.pt': expected NAME=POLICY.pt"),
     (["a=missing.pt"], "missing.pt: no such policy file"),
     (["a={p}", "a={p}"], "the name 'a' is given twice"),
     (["a={p}", "--episodes", "0"], "--episodes 0: expected at least 1"),
     (["a={p}", "--out", "no/such/folder/x.csv"], "no/such/folder/x.csv: no such folder"),
     (["a={p}", "--turn-away", "b=10"], "--turn-away 'b=10': expected NAME=METRES with NAME one"),
+    (["a={p}", "--turn-away", "a"], "--turn-away 'a': expected NAME=METRES with NAME one"),
     (["a={p}", "--turn-away", "a=-1"], "--turn-away 'a=-1': METRES must be a number above 0"),
     (["a={p}", "--turn-away", "a=far"], "--turn-away 'a=far': METRES must be a number above 0"),
 ])
