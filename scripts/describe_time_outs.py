@@ -6,13 +6,15 @@ Replays, from Python, every time-out of each seed of CONFIG in a study's evaluat
 goal episodes (the first ones), each in the single environment under the seed's policy
 (STUDY_DIR/ppo/CONFIG/seed_<k>/policy.pt, with its observation settings, deterministic actions),
 and measures per episode how far the vessel turned (its net heading change in full turns), its
-mean speed and the mean distance to the nearest thing its range-finder sees.
+mean speed, its mean speed over the last END_STEPS steps (a parked vessel ends at rest) and the
+mean distance to the nearest thing its range-finder sees.
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/describe_time_outs.py STUDY_DIR CONFIG \\
         [--out episodes.csv]
 
 Prints, for the time-outs and for the goal episodes, the number replayed, how many ended as the
-evaluation recorded (the replay is evaluate's episode), and the mean and median of each measure;
+evaluation recorded (the replay is evaluate's episode), the mean and median of each measure, and
+how many ended at rest (below AT_REST_MPS over the last END_STEPS steps);
 --out writes one row per replayed episode. Bad input: one line naming the file, exit status 2.
 """
 
@@ -29,7 +31,9 @@ import colav
 
 SEED_MARK = ".seed_"  # the study's model names: "<config>.seed_<k>"
 KINDS = ("time_out", "goal")
-MEASURES = ("turns", "speed", "nearest_range")
+MEASURES = ("turns", "speed", "end_speed", "nearest_range")
+END_STEPS = 100  # the end of an episode, for end_speed
+AT_REST_MPS = 0.05  # an end_speed below this is a vessel at rest (cruising: about 0.57 m/s)
 COLUMNS = ("model", "scenario_seed", "kind", "replayed_alike", *MEASURES)
 
 
@@ -69,8 +73,8 @@ def chosen_episodes(path, config):
 
 
 def replay(policy, scenario_seed):
-    """One test scenario under the policy: (net turns, mean speed m/s, mean nearest range m,
-    timed out, reached the goal)."""
+    """One test scenario under the policy: (net turns, mean speed m/s, mean speed over the last
+    END_STEPS steps m/s, mean nearest range m, timed out, reached the goal)."""
     env = colav.make(scenario=colav.training_scenario(scenario_seed), test_mode=True,
                      **policy.observation_settings)
     obs, _ = env.reset()
@@ -89,7 +93,8 @@ def replay(policy, scenario_seed):
         if terminated or truncated:
             metrics = info["episode_metrics"]
             return (abs(turned) / (2 * math.pi), statistics.fmean(speeds),
-                    statistics.fmean(nearest), bool(metrics["truncated"]),
+                    statistics.fmean(speeds[-END_STEPS:]), statistics.fmean(nearest),
+                    bool(metrics["truncated"]),
                     bool(metrics["goal_reached"]))
 
 
@@ -114,10 +119,10 @@ def main():
         policy = colav.Policy(policies[index])  # replay restarts its memory at each episode
         for kind, scenario_seeds in kinds.items():
             for scenario_seed in scenario_seeds:
-                turns, speed, nearest, timed_out, goal = replay(policy, scenario_seed)
+                *measures, timed_out, goal = replay(policy, scenario_seed)
                 alike = timed_out if kind == "time_out" else goal
                 rows.append(dict(zip(COLUMNS, (f"{args.config}{SEED_MARK}{index}", scenario_seed,
-                                               kind, int(alike), turns, speed, nearest))))
+                                               kind, int(alike), *measures))))
     for kind in KINDS:
         mine = [row for row in rows if row["kind"] == kind]
         if not mine:
@@ -127,7 +132,9 @@ def main():
         summary = ", ".join(
             f"{measure} {statistics.fmean(r[measure] for r in mine):.2f} "
             f"(median {statistics.median(r[measure] for r in mine):.2f})" for measure in MEASURES)
-        print(f"{kind}: {len(mine)} episodes, {alike} replayed alike; {summary}")
+        at_rest = sum(row["end_speed"] < AT_REST_MPS for row in mine)
+        print(f"{kind}: {len(mine)} episodes, {alike} replayed alike; {summary}; "
+              f"at rest at the end {at_rest}")
     if args.out:
         temporary = args.out + ".tmp"  # renamed into place once whole
         try:

@@ -48,14 +48,23 @@ def replayed(study, config, tmp_path):
         return result.stdout, list(csv.DictReader(file))
 
 
+def line_of(output, kind):
+    """The summary line of one kind of episode."""
+    return next(line for line in output.splitlines() if line.startswith(kind + ":"))
+
+
 def test_a_vessel_at_full_rudder_circles_and_one_without_thrust_stops(study, tmp_path):
     output, rows = replayed(study, "circle", tmp_path)
     assert "time_out: 1 episodes" in output and "goal: none" in output, output
+    assert line_of(output, "time_out").endswith("at rest at the end 0"), output
     assert [row["kind"] for row in rows] == ["time_out"]
     assert float(rows[0]["turns"]) > 5 and float(rows[0]["speed"]) > 0.1, rows
-    _, rows = replayed(study, "still", tmp_path)  # still: a vessel starts at rest
+    assert float(rows[0]["end_speed"]) > 0.1, rows
+    output, rows = replayed(study, "still", tmp_path)  # still: a vessel starts at rest
     time_out = rows[0]
     assert float(time_out["turns"]) < 0.01 and float(time_out["speed"]) < 0.01, rows
+    assert float(time_out["end_speed"]) < 0.01, rows
+    assert line_of(output, "time_out").endswith("at rest at the end 1"), output
 
 
 def test_counts_the_episodes_that_the_replay_ends_otherwise(study, tmp_path):
