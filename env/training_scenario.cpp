@@ -57,13 +57,14 @@ constexpr std::array<double, 100> kSpeedProbabilities = {
 // Moving obstacles are advanced by 0.1 s at construction and 1 s before the first observation.
 constexpr double kObstacleLeadTime = 1.1;
 
-// Random curve through the origin (reference-simulator 4.1), n drawn per episode.
-std::vector<Eigen::Vector2d> RandomWaypoints(Rng& rng, double length) {
+// Random curve through the origin (reference-simulator 4.1): n drawn per episode, of which only
+// the k = n / 2 bends matter, unless `bends` (1 or 2) fixes k. The draw of n is made either way.
+std::vector<Eigen::Vector2d> RandomWaypoints(Rng& rng, double length, int bends) {
   const int n = static_cast<int>(std::floor(4.0 * Uniform01(rng) + 2.0));
   const double alpha = 2.0 * kPi * (Uniform01(rng) - 0.5);
   const Eigen::Vector2d start = (length / 2.0) * Eigen::Vector2d(std::cos(alpha), std::sin(alpha));
   const Eigen::Vector2d end = -start;
-  const int k = n / 2;
+  const int k = bends > 0 ? bends : n / 2;
   std::vector<Eigen::Vector2d> waypoints = {start, end};
   for (int w = 0; w < k; ++w) {
     const double scale = length / (k + 1);
@@ -122,7 +123,7 @@ Scenario TrainingScenarioGenerator::Make(std::uint64_t seed) const {
   Rng rng(seed);
   Scenario scenario;
   scenario.name = "training-" + std::to_string(seed);
-  scenario.waypoints = RandomWaypoints(rng, config_.nominal_path_length);
+  scenario.waypoints = RandomWaypoints(rng, config_.nominal_path_length, config_.path_bends);
   const Path path(scenario.waypoints);
   const double offset_x = 2.0 * config_.start_offset * (Uniform01(rng) - 0.5);
   const double offset_y = 2.0 * config_.start_offset * (Uniform01(rng) - 0.5);

@@ -18,6 +18,10 @@ struct TrainingScenarioConfig {
   double static_radius_mean = 30.0;  ///< Poisson mean of the radius (m)
   double start_offset = 25.0;        ///< m, uniform start offset per axis
   double min_clearance = 100.0;      ///< m, from the start and the goal
+  /// Bends of the path (waypoints between start, origin and end, each side): 0 draws 1 or 2 per
+  /// episode (our default); 1 or 2 fixes them, as in each of the authors' training worlds, whose
+  /// number of waypoints was drawn once when the world was built (reference-simulator 8.3).
+  int path_bends = 0;
 };
 
 class TrainingScenarioGenerator : public ScenarioSource {

@@ -9,6 +9,8 @@ namespace {
 constexpr int kMaxObstacles = 200;
 // Lateral spreads beyond this put every obstacle out of the range-finder's 150 m.
 constexpr double kMaxDisplacementSd = 5000.0;
+// The reference's paths have 1 or 2 bends (n / 2 for n in 2..5 waypoints).
+constexpr int kMaxPathBends = 2;
 
 }  // namespace
 
@@ -27,7 +29,11 @@ OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding(const std::string
               kMaxObstacles)
       .Number(prefix + ".static_displacement_sd", &World::static_displacement_sd,
               "standard deviation (m) of a circle's lateral offset from the path (training)", 0.0,
-              kMaxDisplacementSd);
+              kMaxDisplacementSd)
+      .Number(prefix + ".path_bends", &World::path_bends,
+              "bends of the path on each side of the origin: 0 draws 1 or 2 per episode; 1 or 2 "
+              "fixes them (each of the authors' training worlds drew them once)",
+              0, kMaxPathBends);
   return binding;
 }
 

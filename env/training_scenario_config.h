@@ -12,7 +12,7 @@
 namespace colav {
 
 /// PREFIX.num_moving, PREFIX.moving_displacement_sd, PREFIX.num_static,
-/// PREFIX.static_displacement_sd, with the paper's values as defaults.
+/// PREFIX.static_displacement_sd, PREFIX.path_bends, with the paper's values as defaults.
 OptionsBinding<TrainingScenarioConfig> TrainingScenarioBinding(const std::string& prefix);
 
 /// How many of a batch of `num_worlds` play a second kind of world given its share (train_ppo's

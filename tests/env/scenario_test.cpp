@@ -176,6 +176,31 @@ TEST(TrainingScenario, PaperCountsAndPlacementRules) {
   EXPECT_EQ(layouts.size(), 2U);
 }
 
+// path_bends fixes the layout (5 waypoints for one bend a side, 7 for two) and changes nothing
+// else: a scenario whose drawn layout already has that many bends comes out the same.
+TEST(TrainingScenario, PathBendsFixTheLayoutAndNothingElse) {
+  const TrainingScenarioGenerator drawn;
+  for (const int bends : {1, 2}) {
+    TrainingScenarioConfig config;
+    config.path_bends = bends;
+    const TrainingScenarioGenerator fixed(config);
+    const std::size_t waypoints = 2 * static_cast<std::size_t>(bends) + 3;
+    int alike = 0;
+    for (std::uint64_t seed = 0; seed < 40; ++seed) {
+      const Scenario s = fixed.Make(seed);
+      ASSERT_EQ(s.waypoints.size(), waypoints) << "seed " << seed;
+      const Scenario d = drawn.Make(seed);
+      if (d.waypoints.size() != waypoints) continue;
+      ++alike;
+      EXPECT_EQ(s.waypoints, d.waypoints);
+      EXPECT_EQ(s.vessel_position, d.vessel_position);
+      ASSERT_EQ(s.static_obstacles.size(), d.static_obstacles.size());
+      EXPECT_EQ(s.static_obstacles.back().center, d.static_obstacles.back().center);
+    }
+    EXPECT_GT(alike, 5) << bends;
+  }
+}
+
 TEST(TrainingScenario, CountsAndSpreadsAreConfigurable) {
   TrainingScenarioConfig config;
   config.num_moving = 0;

@@ -13,7 +13,7 @@ import colav
 from conftest import BIN_DIR
 
 PAPER = {"num_moving": 17, "moving_displacement_sd": 500.0, "num_static": 11,
-         "static_displacement_sd": 250.0}
+         "static_displacement_sd": 250.0, "path_bends": 0}
 CIRCLES = {"num_static": 40, "num_moving": 0}  # crowded with circles, no vessels
 
 
