@@ -411,15 +411,6 @@ void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
-// The configuration `model` is compared with: its own compare_to, else `study_reference`.
-const std::string& ComparedWith(const StudySpec& spec, const std::string& model,
-                                const std::string& study_reference) {
-  const auto config = std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                                   [&](const PpoConfigSpec& c) { return c.name == model; });
-  return config != spec.ppo_configs.end() && !config->compare_to.empty() ? config->compare_to
-                                                                         : study_reference;
-}
-
 }  // namespace
 
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
@@ -458,7 +449,8 @@ ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetR
   for (const SeededModel& model : spec.SeededModels()) {
     const auto& seeds = *std::find_if(groups.begin(), groups.end(),
                                       [&](const auto& g) { return g.first == model.name; });
-    const std::string& compared_with = ComparedWith(spec, model.name, reference_config);
+    const std::string& compared_with =
+        model.compare_to.empty() ? reference_config : model.compare_to;
     const auto reference = std::find_if(groups.begin(), groups.end(),
                                         [&](const auto& g) { return g.first == compared_with; });
     for (const auto& other : groups) {

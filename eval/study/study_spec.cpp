@@ -325,7 +325,9 @@ int EnsembleSpec::MaxCount(int seeds) const {
 
 std::vector<SeededModel> StudySpec::SeededModels() const {
   std::vector<SeededModel> models;
-  for (const PpoConfigSpec& config : ppo_configs) models.push_back({config.name, ppo_seeds});
+  for (const PpoConfigSpec& config : ppo_configs) {
+    models.push_back({config.name, ppo_seeds, config.compare_to});
+  }
   for (const EnsembleSpec& ensemble : ensembles) models.push_back({ensemble.name, ensemble.count});
   return models;
 }

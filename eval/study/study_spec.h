@@ -89,6 +89,7 @@ struct EnsembleSpec {
 struct SeededModel {
   std::string name;
   int seeds = 0;
+  std::string compare_to{};  ///< a configuration's own (PpoConfigSpec::compare_to); empty: none
 };
 
 struct EvaluationSpec {
