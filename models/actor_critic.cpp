@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "env/environment_spec.h"
+#include "models/circular_conv.h"
 
 namespace colav {
 namespace {
@@ -35,14 +36,6 @@ void InitTrunk(torch::nn::Sequential& mlp, torch::Generator& generator) {
       InitLinear(holder, kTrunkGain, generator);
     }
   }
-}
-
-// PyTorch's default Conv1d initialisation (kaiming_uniform with a = sqrt(5), i.e.
-// U(+-1/sqrt(fan_in)) for weight and bias), drawn from `generator` instead of the global one.
-void DefaultConvInit(torch::nn::Conv1d& conv, torch::Generator& generator) {
-  const double bound = 1.0 / std::sqrt(static_cast<double>(conv->weight[0].numel()));
-  conv->weight.uniform_(-bound, bound, generator);
-  conv->bias.uniform_(-bound, bound, generator);
 }
 
 }  // namespace
@@ -95,8 +88,9 @@ void ActorCriticImpl::Initialise() {
   auto generator = at::make_generator<at::CPUGeneratorImpl>(options_.seed);
   if (options_.extractor.kind == ExtractorKind::kBaseline) {
     for (const PerceptionLayer& layer : features_extractor_->layers()) {
+      // PyTorch's default Conv1d initialisation, drawn from `generator`.
       torch::nn::Conv1d conv = layer.conv;
-      DefaultConvInit(conv, generator);
+      ResetConvolutionParameters(conv->weight, conv->bias, generator);
     }
   }
   if (options_.extractor.kind != ExtractorKind::kBaseline &&
