@@ -38,6 +38,17 @@ std::vector<std::int64_t> DrawShifts(int count, Rng& rng) {
   return shifts;
 }
 
+std::vector<std::int64_t> ShiftsOfScan(const AugmentationOptions& options, Rng& rng) {
+  if (options.fixed_shift_rays == 0) return DrawShifts(options.shifts_per_scan, rng);
+  if (options.shifts_per_scan > 2 || options.fixed_shift_rays < 0 ||
+      2 * options.fixed_shift_rays >= kNumRays) {
+    throw std::invalid_argument("ShiftsOfScan: bad fixed shifts");
+  }
+  const std::vector<std::int64_t> fixed = {options.fixed_shift_rays,
+                                           kNumRays - options.fixed_shift_rays};
+  return {fixed.begin(), fixed.begin() + options.shifts_per_scan};
+}
+
 RangeScan RollScan(const RangeScan& scan, std::int64_t shift) {
   RangeScan rolled{};
   for (std::int64_t i = 0; i < kNumRays; ++i) {
@@ -59,7 +70,7 @@ ScanDataset AugmentAndSplit(const std::vector<RangeScan>& scans,
   dataset.ranges.reserve(rows * kNumRays);
   for (std::size_t s = 0; s < scans.size(); ++s) {
     std::vector<std::int64_t> shifts = {0};
-    for (const std::int64_t shift : DrawShifts(options.shifts_per_scan, shift_rng)) {
+    for (const std::int64_t shift : ShiftsOfScan(options, shift_rng)) {
       shifts.push_back(shift);
     }
     for (const std::int64_t shift : shifts) {

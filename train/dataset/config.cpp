@@ -23,6 +23,11 @@ void RequireOrdered(double low, double high, const std::string& low_key,
 }
 
 void RequireConsistent(Options& options) {
+  if (options.augmentation.fixed_shift_rays > 0 && options.augmentation.shifts_per_scan > 2) {
+    throw UserError("augmentation.shifts_per_scan (" +
+                    std::to_string(options.augmentation.shifts_per_scan) +
+                    ") exceeds the 2 fixed shifts of augmentation.fixed_shift_rays");
+  }
   if (options.synthetic_scans > 0) RequirePlaceableShapes(options.synthetic);
   RequireOrdered(options.mixed_share + options.vessels_share, 1.0,
                  "dataset.mixed_share + dataset.vessels_share", "1");
@@ -69,6 +74,11 @@ OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding() {
               "share of synthetic scans with 5 vessels (5 circles: the rest)", 0.0, 1.0)
       .Number("augmentation.shifts_per_scan", augmentation(&AugmentationOptions::shifts_per_scan),
               "random circular shifts added per scan (2: 20,000 -> 60,000 rows)", 0, 179)
+      .Number("augmentation.fixed_shift_rays",
+              augmentation(&AugmentationOptions::fixed_shift_rays),
+              "0: random shifts; k: shifts of +k then -k rays instead (the reference: 10, +-20 "
+              "degrees; shifts_per_scan at most 2)",
+              0, kNumRays / 2 - 1)
       .Number("augmentation.test_fraction", augmentation(&AugmentationOptions::test_fraction),
               "share of source scans in the test split", 0.0, 1.0)
       .Number("augmentation.validation_fraction",

@@ -89,6 +89,36 @@ TEST(DatasetGenerationTest, RowsAreShiftedCopiesOfTheirSource) {
   }
 }
 
+// The reference code's augmentation (reference-learning.md 4.2 step 2): each scan rolled by +10
+// and by -10 rays, numpy.roll(x, 10) and numpy.roll(x, -10); the sources and their split do not
+// change.
+TEST(DatasetGenerationTest, FixedShiftsAreTheReferenceRolls) {
+  DatasetGenerationOptions options = SmallOptions(5, 2);
+  const ScanDataset random_shifts = Generate(options);
+  options.augmentation.fixed_shift_rays = 10;
+  const ScanDataset fixed = Generate(options);
+  ASSERT_EQ(fixed.rows(), random_shifts.rows());
+  EXPECT_EQ(fixed.split, random_shifts.split);
+  EXPECT_EQ(fixed.source_scan, random_shifts.source_scan);
+  for (std::size_t row = 0; row < fixed.rows(); row += 3) {
+    ASSERT_EQ(fixed.shift[row], 0);
+    ASSERT_EQ(fixed.shift[row + 1], 10);
+    ASSERT_EQ(fixed.shift[row + 2], 170);  // -10 mod 180
+    for (std::size_t i = 0; i < kNumRays; ++i) {
+      const float original = fixed.ranges[row * kNumRays + i];
+      EXPECT_EQ(fixed.ranges[(row + 1) * kNumRays + (i + 10) % kNumRays], original);
+      EXPECT_EQ(fixed.ranges[(row + 2) * kNumRays + (i + 170) % kNumRays], original);
+    }
+  }
+  options.augmentation.shifts_per_scan = 1;  // +10 only
+  const ScanDataset one_shift = Generate(options);
+  ASSERT_EQ(one_shift.rows(), 160U);
+  for (std::size_t row = 0; row < one_shift.rows(); row += 2) {
+    EXPECT_EQ(one_shift.shift[row], 0);
+    EXPECT_EQ(one_shift.shift[row + 1], 10);
+  }
+}
+
 TEST(DatasetGenerationTest, RollFollowsNumpy) {
   RangeScan scan{};
   for (int i = 0; i < kNumRays; ++i) scan[static_cast<std::size_t>(i)] = static_cast<float>(i);
