@@ -36,7 +36,10 @@ def run(*args):
 
 
 def metric_line(output, metric):
-    return next(line for line in output.splitlines() if line.startswith(metric)).split()
+    """The difference's mean and interval, then P(A better)'s: six strings."""
+    line = next(line for line in output.splitlines() if line.startswith(metric))
+    difference, improvement = line[len(metric):].split("P(A better)")
+    return difference.split() + improvement.split()
 
 
 def test_a_constant_difference_has_a_point_interval(tmp_path):
@@ -49,12 +52,16 @@ def test_a_constant_difference_has_a_point_interval(tmp_path):
     result = run(f"{a}:other", f"{b}:plain", "--resamples", 200)
     assert result.returncode == 0, result.stderr
     assert "over 3 seeds x 4 scenarios" in result.stdout
-    assert metric_line(result.stdout, "cte m")[-3:] == ["+1.50", "[+1.50,", "+1.50]"]
-    assert metric_line(result.stdout, "progress pts")[-3:] == ["+0.00", "[+0.00,", "+0.00]"]
+    # P(A better): never on cross-track error, a tie (0.5) on progress and time-outs; on
+    # collisions worse in scenario 0 and tied in the other 3: (0 + 3 x 0.5) / 4 = 0.375.
+    assert metric_line(result.stdout, "cte m") == ["+1.50", "[+1.50,", "+1.50]", "0.00",
+                                                   "[0.00,", "0.00]"]
+    assert metric_line(result.stdout, "progress pts") == ["+0.00", "[+0.00,", "+0.00]", "0.50",
+                                                          "[0.50,", "0.50]"]
     collisions = metric_line(result.stdout, "collisions pts")
-    assert collisions[-3] == "+25.00"
+    assert collisions[0] == "+25.00" and collisions[3] == "0.38"
     time_outs = metric_line(result.stdout, "time-outs pts")
-    assert time_outs[-3:] == ["+0.00", "[+0.00,", "+0.00]"]
+    assert time_outs == ["+0.00", "[+0.00,", "+0.00]", "0.50", "[0.50,", "0.50]"]
 
 
 def test_the_interval_spans_the_seeds(tmp_path):
@@ -66,7 +73,24 @@ def test_the_interval_spans_the_seeds(tmp_path):
     path = write_episodes(tmp_path / "episodes.csv", table)
     result = run(f"{path}:a", f"{path}:b")
     assert result.returncode == 0, result.stderr
-    assert metric_line(result.stdout, "cte m")[-3:] == ["+1.00", "[+0.00,", "+2.00]"]
+    assert metric_line(result.stdout, "cte m")[:3] == ["+1.00", "[+0.00,", "+2.00]"]
+
+
+def test_a_single_agent_pairs_with_every_seed(tmp_path):
+    # The authors' agents have one run each, named without a seed: 12 m in every scenario.
+    table = episodes("x", [0], 4, lambda s, k: 12.0)
+    for row in table:
+        row[0] = "ref.agent"
+    table += episodes("ours", [0, 1, 2], 4, lambda s, k: 10.0 + 2 * s)  # 10, 12, 14 m
+    path = write_episodes(tmp_path / "episodes.csv", table)
+    result = run(f"{path}:ours", f"{path}:ref.agent")
+    assert result.returncode == 0, result.stderr
+    assert "over 3 seeds x 4 scenarios" in result.stdout
+    # Seed 0 keeps closer than the agent (better), seed 1 ties, seed 2 is farther: P = 0.5.
+    assert metric_line(result.stdout, "cte m")[0] == "+0.00"
+    assert metric_line(result.stdout, "cte m")[3] == "0.50"
+    backwards = run(f"{path}:ref.agent", f"{path}:ours")
+    assert metric_line(backwards.stdout, "cte m")[0] == "+0.00"
 
 
 def refusal(result):

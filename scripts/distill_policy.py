@@ -1,0 +1,294 @@
+#!/usr/bin/python3
+"""Distil a teacher policy (an ensemble, say) into one recurrent policy, by DAgger.
+
+The teacher is any policy file `evaluate` runs: a trained `policy.pt`, or an `ensemble_policy`
+file whose members hand the helm to each other. The student starts as INIT, a recurrent
+`policy.pt` of `train_ppo` (`policy.recurrent_size` > 0), and keeps its architecture and its
+perception (the encoder and extractor stay as they are, as a locked encoder does); its memory
+(the GRU), actor layers and action layer learn to act as the teacher does:
+
+1. Each iteration plays STEPS steps in each of WORLDS training worlds (the paper's, as
+   `train_ppo` trains in, under the policies' observation settings). The teacher drives in the
+   first iteration, the student in the others; the teacher's deterministic action is recorded
+   at every step (DAgger: the student learns what to do in the states it reaches itself).
+2. The student trains on the last KEEP iterations' steps, in sequences of SEQUENCE steps that
+   start from the memory the student had there, for EPOCHS passes. The loss is the squared
+   error between its action mean and the teacher's action, except beyond a bound the teacher
+   reached: a mean past +1 where the teacher acted +1 is not an error (actions are clipped).
+3. The student is written after every iteration (a temporary file, then renamed), checked
+   against the file's own `step`, with INIT's interface, recorded observation settings and
+   value layers (which do not act, and are not trained).
+
+    PYTHONPATH=build/python /usr/bin/python3 scripts/distill_policy.py TEACHER.pt INIT.pt \\
+        --out STUDENT.pt [--iterations 8] [--seed 0] [...]
+
+Everything random follows --seed (the worlds' episodes and the order of the sequences), so
+the same seed and thread count give the same file. An interrupted run is not resumed: run it
+again. Bad input: one line naming the argument or file, exit status 2.
+"""
+
+import argparse
+import os
+import sys
+import time
+
+import numpy as np
+import torch
+
+import colav
+
+RECURRENT = ("recurrent_weight_ih", "recurrent_weight_hh", "recurrent_bias_ih",
+             "recurrent_bias_hh")
+ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
+
+
+class BadInput(Exception):
+    pass
+
+
+class Student(torch.nn.Module):
+    """INIT's acting layers as trainable parameters, computed as its TorchScript `step` does
+    (a GRU cell over [features], then tanh layers over [features, memory], then the action
+    layer); `mean` is the action before the clip."""
+
+    def __init__(self, named):
+        super().__init__()
+        self.actor_layers = sorted(int(name.split("_")[-2]) for name in named
+                                   if name.startswith("mlp_extractor_policy_net_")
+                                   and name.endswith("_weight"))
+        names = list(RECURRENT) + [ACTOR_LAYER.format(k, kind) for k in self.actor_layers
+                                   for kind in ("weight", "bias")]
+        names += ["action_net_weight", "action_net_bias"]
+        missing = [name for name in names if name not in named]
+        if missing or not self.actor_layers:
+            raise BadInput(f"no parameter {missing[0] if missing else 'of an actor layer'}")
+        self.names = names
+        self.weights = torch.nn.ParameterDict(
+            {name: torch.nn.Parameter(named[name].detach().clone()) for name in names})
+
+    def remember(self, features, memory):
+        w = self.weights
+        gates_in = torch.addmm(w["recurrent_bias_ih"], features, w["recurrent_weight_ih"].t())
+        gates_memory = torch.addmm(w["recurrent_bias_hh"], memory, w["recurrent_weight_hh"].t())
+        reset_in, update_in, new_in = gates_in.chunk(3, 1)
+        reset_memory, update_memory, new_memory = gates_memory.chunk(3, 1)
+        reset = torch.sigmoid(reset_in + reset_memory)
+        update = torch.sigmoid(update_in + update_memory)
+        candidate = torch.tanh(new_in + reset * new_memory)
+        return (1 - update) * candidate + update * memory
+
+    def mean(self, features, memory):
+        w = self.weights
+        hidden = torch.cat([features, memory], 1)
+        for k in self.actor_layers:
+            hidden = torch.tanh(torch.addmm(w[ACTOR_LAYER.format(k, "bias")], hidden,
+                                            w[ACTOR_LAYER.format(k, "weight")].t()))
+        return torch.addmm(w["action_net_bias"], hidden, w["action_net_weight"].t())
+
+
+def imitation_loss(mean, target):
+    """Squared error of the action mean, none past a bound the teacher's action sits on."""
+    error = mean - target
+    error = torch.where(target >= 1.0, torch.clamp(error, max=0.0), error)
+    error = torch.where(target <= -1.0, torch.clamp(error, min=0.0), error)
+    return (error * error).mean()
+
+
+class Rollout:
+    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], episode starts
+    [T, N] and the student's memory before each step [T, N, H]; the last step's observations
+    [N, O] check the written file."""
+
+    def __init__(self, steps, worlds, feature_size, memory_size):
+        self.features = torch.empty(steps, worlds, feature_size)
+        self.targets = torch.empty(steps, worlds, 2)
+        self.starts = torch.empty(steps, worlds, dtype=torch.bool)
+        self.memory = torch.empty(steps, worlds, memory_size)
+
+
+def play(envs, teacher, init, student, args, iteration):
+    """One iteration's rollout, and the driving policy's episodes (progress, |cte|, collision)."""
+    memory_size = int(init.recurrent_size)
+    obs, _ = envs.reset(seed=args.seed + iteration)
+    starts = np.ones(args.worlds, dtype=bool)
+    memory = torch.zeros(args.worlds, memory_size)
+    rollout = None
+    episodes = []
+    for t in range(args.steps):
+        observation = torch.from_numpy(obs.copy())
+        target = torch.from_numpy(teacher.act(obs, starts).copy())
+        start = torch.from_numpy(starts.copy())
+        memory = torch.where(start[:, None], torch.zeros_like(memory), memory)
+        with torch.no_grad():
+            features = init.features(observation)
+            if rollout is None:
+                rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
+            rollout.features[t], rollout.targets[t] = features, target
+            rollout.starts[t], rollout.memory[t] = start, memory
+            rollout.last_observations = observation
+            memory = student.remember(features, memory)
+            action = torch.clamp(student.mean(features, memory), -1.0, 1.0)
+        driving = target if iteration == 0 else action
+        obs, _, terminated, truncated, info = envs.step(driving.numpy().astype(np.float32))
+        starts = terminated | truncated
+        if "episode_metrics" in info:
+            metrics = info["episode_metrics"]
+            for i in np.nonzero(info["_episode_metrics"])[0]:
+                episodes.append((metrics["progress"][i], metrics["mean_abs_cte"][i],
+                                 metrics["collision"][i]))
+    return rollout, episodes
+
+
+def train(student, optimiser, rollouts, args, generator):
+    """EPOCHS passes over every sequence of the kept rollouts; the mean loss of the last."""
+    windows = [(r, t, n) for r in range(len(rollouts))
+               for t in range(0, args.steps - args.sequence + 1, args.sequence // 2)
+               for n in range(args.worlds)]
+    for _ in range(args.epochs):
+        order = torch.randperm(len(windows), generator=generator).tolist()
+        total, batches = 0.0, 0
+        for first in range(0, len(order), args.batch):
+            chosen = [windows[i] for i in order[first:first + args.batch]]
+            pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
+                [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
+            features, targets, starts = pick("features"), pick("targets"), pick("starts")
+            memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
+            loss = 0.0
+            for j in range(args.sequence):
+                if j > 0:
+                    memory = torch.where(starts[j][:, None], torch.zeros_like(memory), memory)
+                memory = student.remember(features[j], memory)
+                loss = loss + imitation_loss(student.mean(features[j], memory), targets[j])
+            loss = loss / args.sequence
+            optimiser.zero_grad()
+            loss.backward()
+            torch.nn.utils.clip_grad_norm_(student.parameters(), args.max_grad_norm)
+            optimiser.step()
+            total, batches = total + loss.item(), batches + 1
+    return total / max(batches, 1)
+
+
+def write_student(init, student, rollout, path):
+    """INIT's file with the student's weights, checked against its own step, then renamed."""
+    parameters = dict(init.named_parameters())
+    with torch.no_grad():
+        for name in student.names:
+            parameters[name].copy_(student.weights[name])
+        features, memory = rollout.features[-1], rollout.memory[-1]
+        expected = torch.clamp(student.mean(features, student.remember(features, memory)), -1, 1)
+    temporary = f"{path}.tmp"
+    init.save(temporary)
+    written = torch.jit.load(temporary)
+    action, _ = written.step(rollout.last_observations, memory)
+    if not torch.allclose(action, expected, atol=1e-5):
+        os.remove(temporary)
+        raise RuntimeError("the written student does not act as trained (internal error)")
+    os.replace(temporary, path)
+
+
+def describe(episodes):
+    """The episodes that ended in a rollout, in a few words."""
+    if not episodes:
+        return "no episode to its end"
+    progress, cte, collided = (np.mean(column) for column in zip(*episodes))
+    return (f"{len(episodes)} episodes (progress {100 * progress:.1f} %, cte {cte:.1f} m, "
+            f"collisions {100 * collided:.1f} %)")
+
+
+def parse(argv):
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("teacher", metavar="TEACHER.pt", help="the policy to imitate")
+    parser.add_argument("init", metavar="INIT.pt", help="recurrent train_ppo policy to start from")
+    parser.add_argument("--out", required=True, metavar="STUDENT.pt", help="the student's file")
+    parser.add_argument("--iterations", type=int, default=8, help="DAgger iterations")
+    parser.add_argument("--steps", type=int, default=2048, help="steps per world and iteration")
+    parser.add_argument("--worlds", type=int, default=32, help="training worlds played at once")
+    parser.add_argument("--keep", type=int, default=6, help="last iterations trained on")
+    parser.add_argument("--epochs", type=int, default=3, help="passes over the kept steps")
+    parser.add_argument("--sequence", type=int, default=32, help="steps per training sequence")
+    parser.add_argument("--batch", type=int, default=128, help="sequences per minibatch")
+    parser.add_argument("--learning-rate", type=float, default=3e-4, help="Adam's step size")
+    parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
+    parser.add_argument("--seed", type=int, default=0, help="worlds' episodes, sequence order")
+    parser.add_argument("--threads", type=int, default=2, help="PyTorch and simulator threads")
+    args = parser.parse_args(argv)
+    bounds = {"iterations": (1, 1000), "steps": (2, 100000), "worlds": (1, 1024),
+              "keep": (1, 1000), "epochs": (1, 100), "sequence": (2, 1000),
+              "batch": (1, 100000), "seed": (0, 2**31 - 1), "threads": (1, 256)}
+    for name, (low, high) in bounds.items():
+        value = getattr(args, name)
+        if not low <= value <= high:
+            raise BadInput(f"--{name} {value}: expected {low} to {high}")
+    if args.sequence > args.steps:
+        raise BadInput(f"--sequence {args.sequence}: longer than --steps {args.steps}")
+    for name in ("learning_rate", "max_grad_norm"):
+        value = getattr(args, name)
+        if not 0 < value < 1e3:
+            raise BadInput(f"--{name.replace('_', '-')} {value}: expected a positive value")
+    if not os.path.isdir(os.path.dirname(os.path.abspath(args.out))):
+        raise BadInput(f"--out {args.out}: no such folder")
+    return args
+
+
+def load(args):
+    """The teacher, INIT as TorchScript, and the student made from INIT."""
+    try:
+        teacher = colav.Policy(args.teacher)
+    except (ValueError, RuntimeError) as error:
+        raise BadInput(f"{args.teacher}: {str(error).splitlines()[0]}")
+    try:
+        init = torch.jit.load(args.init)
+    except (ValueError, RuntimeError) as error:
+        raise BadInput(f"{args.init}: not a TorchScript policy ({str(error).splitlines()[0]})")
+    if not hasattr(init, "recurrent_size") or int(init.recurrent_size) <= 0:
+        raise BadInput(f"{args.init}: not a recurrent policy (train_ppo with "
+                       "policy.recurrent_size > 0)")
+    init_settings = colav.Policy(args.init).observation_settings
+    if init_settings != teacher.observation_settings:
+        raise BadInput(f"{args.init}: observation settings {init_settings} differ from the "
+                       f"teacher's {teacher.observation_settings}")
+    try:
+        student = Student(dict(init.named_parameters()))
+    except BadInput as error:
+        raise BadInput(f"{args.init}: {error}")
+    return teacher, init, student
+
+
+def main(argv):
+    try:
+        args = parse(argv)
+        teacher, init, student = load(args)
+    except BadInput as error:
+        print(f"distill_policy: error: {error}", file=sys.stderr)
+        return 2
+    torch.set_num_threads(args.threads)
+    generator = torch.Generator().manual_seed(args.seed)
+    optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
+    envs = colav.make_vec(args.worlds, seed=args.seed, num_threads=args.threads,
+                          **teacher.observation_settings)
+    rollouts = []
+    began = time.monotonic()
+    playing = training = 0.0  # seconds so far
+    for iteration in range(args.iterations):
+        started = time.monotonic()
+        rollout, episodes = play(envs, teacher, init, student, args, iteration)
+        rollouts = (rollouts + [rollout])[-args.keep:]
+        played = time.monotonic()
+        loss = train(student, optimiser, rollouts, args, generator)
+        write_student(init, student, rollouts[-1], args.out)
+        playing, training = playing + played - started, training + time.monotonic() - played
+        # Training time grows with the rollouts kept: ETA from the seconds per play and per
+        # rollout trained on.
+        kept = [min(i + 1, args.keep) for i in range(args.iterations)]
+        left = (playing / (iteration + 1) * (args.iterations - iteration - 1)
+                + training / sum(kept[:iteration + 1]) * sum(kept[iteration + 1:]))
+        elapsed = time.monotonic() - began
+        print(f"iteration {iteration + 1}/{args.iterations}: "
+              f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}, "
+              f"loss {loss:.4f}, elapsed {elapsed:.0f} s, ETA {left:.0f} s", flush=True)
+    print(f"wrote {args.out}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))

@@ -1,0 +1,114 @@
+"""scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
+itself nothing changes; distilled from a policy that holds one action, the student learns it;
+bad input is refused."""
+
+import subprocess
+import sys
+
+import pytest
+import torch
+
+from conftest import HeldAction, SOURCE_DIR, run_program
+
+SCRIPT = SOURCE_DIR / "scripts" / "distill_policy.py"
+SMALL = ["--iterations", 3, "--steps", 64, "--worlds", 4, "--sequence", 8, "--batch", 16,
+         "--epochs", 2, "--threads", 1]
+
+
+def run(*args):
+    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args)], capture_output=True,
+                          text=True)
+
+
+@pytest.fixture(scope="module")
+def recurrent_policy(tmp_path_factory):
+    """A recurrent policy.pt (a memory of 4 values) as train_ppo writes one, barely trained."""
+    folder = tmp_path_factory.mktemp("recurrent")
+    run_program("train_ppo", "--out", folder / "run", "--steps", 128, "--envs", 2, "--set",
+                "ppo.n_steps=64", "--set", "ppo.batch_size=64", "--set", "train.env_threads=1",
+                "--set", "policy.recurrent_size=4")
+    return folder / "run" / "policy.pt"
+
+
+@pytest.fixture(scope="module")
+def held_policy(tmp_path_factory):
+    """A teacher holding surge 0.3 and rudder -0.2, under the recurrent policy's settings."""
+    path = tmp_path_factory.mktemp("held") / "held.pt"
+    torch.jit.script(HeldAction(0.3, -0.2)).save(str(path))
+    path.with_name("held.pt.yaml").write_text("env:\n  closeness: log\n")
+    return path
+
+
+def actions(policy_file, observations):
+    policy = torch.jit.load(str(policy_file))
+    state = policy.initial_state(observations.shape[1])
+    taken = []
+    for observation in observations:
+        action, state = policy.step(observation, state)
+        taken.append(action)
+    return torch.stack(taken)
+
+
+def observations():
+    """Three steps of 8 observations: navigation values and closeness in [0, 1]."""
+    generator = torch.Generator().manual_seed(3)
+    return torch.cat([torch.randn(3, 8, 6, generator=generator),
+                      torch.rand(3, 8, 180, generator=generator)], 2)
+
+
+def losses(output):
+    return [float(line.split("loss ")[1].split(",")[0]) for line in output.splitlines()
+            if line.startswith("iteration")]
+
+
+def test_a_policy_distilled_into_itself_does_not_change(recurrent_policy, tmp_path):
+    # The teacher's actions are the student's own clipped means: no error anywhere, no step.
+    result = run(recurrent_policy, recurrent_policy, "--out", tmp_path / "student.pt", *SMALL)
+    assert result.returncode == 0, result.stderr
+    assert losses(result.stdout) == [0.0, 0.0, 0.0], result.stdout
+    assert torch.equal(actions(tmp_path / "student.pt", observations()),
+                       actions(recurrent_policy, observations()))
+    written = torch.jit.load(str(tmp_path / "student.pt"))
+    assert written.recurrent_size == 4
+    assert written.observation_settings == torch.jit.load(str(recurrent_policy)).observation_settings
+
+
+def test_the_student_learns_the_teachers_action_and_the_same_seed_gives_the_same_file(
+        recurrent_policy, held_policy, tmp_path):
+    result = run(held_policy, recurrent_policy, "--out", tmp_path / "a.pt", "--learning-rate",
+                 0.01, *SMALL)
+    assert result.returncode == 0, result.stderr
+    first, *_, last = losses(result.stdout)
+    assert last < first / 4, result.stdout
+    held = torch.tensor([0.3, -0.2])
+    before = (actions(recurrent_policy, observations()) - held).abs().mean()
+    after = (actions(tmp_path / "a.pt", observations()) - held).abs().mean()
+    assert after < before / 2, (before, after)
+    again = run(held_policy, recurrent_policy, "--out", tmp_path / "b.pt", "--learning-rate",
+                0.01, *SMALL)
+    assert again.returncode == 0, again.stderr
+    assert torch.equal(actions(tmp_path / "a.pt", observations()),
+                       actions(tmp_path / "b.pt", observations()))
+
+
+def refusal(result):
+    assert result.returncode == 2, result.stdout + result.stderr
+    assert len(result.stderr.strip().splitlines()) == 1, result.stderr
+    return result.stderr
+
+
+def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp_path):
+    out = tmp_path / "student.pt"
+    assert "not a recurrent policy" in refusal(run(recurrent_policy, held_policy, "--out", out))
+    linear = tmp_path / "linear.pt"
+    torch.jit.script(HeldAction(0.3, -0.2)).save(str(linear))
+    linear.with_name("linear.pt.yaml").write_text("env:\n  closeness: linear\n")
+    assert "differ from the teacher's" in refusal(run(linear, recurrent_policy, "--out", out))
+    assert "missing.pt" in refusal(run(tmp_path / "missing.pt", recurrent_policy, "--out", out))
+    assert "--sequence 99: longer than --steps 64" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--steps", 64, "--sequence", 99))
+    assert "--worlds 0" in refusal(run(held_policy, recurrent_policy, "--out", out,
+                                       "--worlds", 0))
+    assert "no such folder" in refusal(run(held_policy, recurrent_policy, "--out",
+                                           tmp_path / "nowhere" / "s.pt"))
+    assert not out.exists()
