@@ -1,5 +1,5 @@
 # Draws docs/recipes_front.png from docs/recipes_front.csv: every recipe measured (mean over 5
-# training seeds, 95 % intervals), nine ensembles of our runs and the authors' agents, collisions against progress and
+# training seeds, 95 % intervals), nine ensembles of our runs, the rescued helmsmen distilled into one network, and the authors' agents, collisions against progress and
 # against cross-track error, with the issue's goal (collisions <= 3 %, progress >= 97 %,
 # cross-track error <= 17 m) shaded. Run from the repository's root: gnuplot scripts/recipes_front.gp
 set terminal pngcairo size 1500,700 enhanced font 'DejaVu Sans,11'
@@ -8,11 +8,11 @@ set datafile separator ','
 set datafile missing ''
 data = 'docs/recipes_front.csv'
 group(name) = (strcol(2) eq name) ? 1 : NaN
-groups = "3M 10M 15M authors ensembles"
+groups = "3M 10M 15M authors ensembles distilled"
 title_of(i) = i == 1 ? '3,000,000 steps' : i == 2 ? '10,000,000 steps' : \
               i == 3 ? '15,000,000-25,000,000 steps' : i == 4 ? "the authors' agents" : \
-              'ensembles of our runs'
-points = "5 9 7 3 11"
+              i == 5 ? 'ensembles of our runs' : 'one network distilled from the rescued helmsmen'
+points = "5 9 7 3 11 13"
 set key below horizontal box
 set grid
 set xlabel 'collisions % (lower is better)'
@@ -22,14 +22,14 @@ set multiplot layout 1,2 title "Every recipe on the same 1,000 scenarios: only t
 set ylabel 'progress % (higher is better)'
 set yrange [90:98]
 set object 1 rect from graph 0, first 97 to first 3, graph 1 fc rgb '#b8e0b8' behind
-plot for [i=1:5] data skip 7 using 10:($4 * group(word(groups, i))):11:12:5:6 \
+plot for [i=1:6] data skip 7 using 10:($4 * group(word(groups, i))):11:12:5:6 \
        with xyerrorbars pt (int(word(points, i))) ps 1.3 title title_of(i), \
      data skip 7 using 10:4:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
 unset object 1
 set ylabel 'cross-track error m (lower is better)'
 set yrange [12:25]
 set object 2 rect from graph 0, graph 0 to first 3, first 17 fc rgb '#b8e0b8' behind
-plot for [i=1:5] data skip 7 using 10:($7 * group(word(groups, i))):11:12:8:9 \
+plot for [i=1:6] data skip 7 using 10:($7 * group(word(groups, i))):11:12:8:9 \
        with xyerrorbars pt (int(word(points, i))) ps 1.3 title title_of(i), \
      data skip 7 using 10:7:14 with labels offset 0.8,0.6 left font ',9' noenhanced notitle
 unset multiplot
