@@ -100,6 +100,7 @@ class Rollout:
     [N, O] check the written file."""
 
     def __init__(self, steps, worlds, feature_size, memory_size):
+        self.last_observations = None
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
@@ -109,16 +110,17 @@ class Rollout:
 def play(envs, teacher, init, student, args, iteration):
     """One iteration's rollout, and the driving policy's episodes (progress, |cte|, collision)."""
     memory_size = int(init.recurrent_size)
+    initial = init.initial_state(1)  # the memory at an episode's start, as `evaluate` begins it
     obs, _ = envs.reset(seed=args.seed + iteration)
     starts = np.ones(args.worlds, dtype=bool)
-    memory = torch.zeros(args.worlds, memory_size)
+    memory = initial.expand(args.worlds, memory_size)
     rollout = None
     episodes = []
     for t in range(args.steps):
         observation = torch.from_numpy(obs.copy())
         target = torch.from_numpy(teacher.act(obs, starts).copy())
         start = torch.from_numpy(starts.copy())
-        memory = torch.where(start[:, None], torch.zeros_like(memory), memory)
+        memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
             features = init.features(observation)
             if rollout is None:
@@ -139,8 +141,9 @@ def play(envs, teacher, init, student, args, iteration):
     return rollout, episodes
 
 
-def train(student, optimiser, rollouts, args, generator):
-    """EPOCHS passes over every sequence of the kept rollouts; the mean loss of the last."""
+def train(student, optimiser, rollouts, initial, args, generator):
+    """EPOCHS passes over every sequence of the kept rollouts, the memory restarting at
+    `initial` at each episode's start; the mean loss of the last pass."""
     windows = [(r, t, n) for r in range(len(rollouts))
                for t in range(0, args.steps - args.sequence + 1, args.sequence // 2)
                for n in range(args.worlds)]
@@ -156,7 +159,7 @@ def train(student, optimiser, rollouts, args, generator):
             loss = 0.0
             for j in range(args.sequence):
                 if j > 0:
-                    memory = torch.where(starts[j][:, None], torch.zeros_like(memory), memory)
+                    memory = torch.where(starts[j][:, None], initial, memory)
                 memory = student.remember(features[j], memory)
                 loss = loss + imitation_loss(student.mean(features[j], memory), targets[j])
             loss = loss / args.sequence
@@ -274,7 +277,7 @@ def main(argv):
         rollout, episodes = play(envs, teacher, init, student, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
-        loss = train(student, optimiser, rollouts, args, generator)
+        loss = train(student, optimiser, rollouts, init.initial_state(1), args, generator)
         write_student(init, student, rollouts[-1], args.out)
         playing, training = playing + played - started, training + time.monotonic() - played
         # Training time grows with the rollouts kept: ETA from the seconds per play and per
