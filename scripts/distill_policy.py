@@ -85,6 +85,11 @@ class Student(torch.nn.Module):
                                             w[ACTOR_LAYER.format(k, "weight")].t()))
         return torch.addmm(w["action_net_bias"], hidden, w["action_net_weight"].t())
 
+    def act(self, features, memory):
+        """(clipped action, next memory), as the file's `step`."""
+        memory = self.remember(features, memory)
+        return torch.clamp(self.mean(features, memory), -1.0, 1.0), memory
+
 
 def imitation_loss(mean, target):
     """Squared error of the action mean, none past a bound the teacher's action sits on."""
@@ -107,10 +112,9 @@ class Rollout:
         self.memory = torch.empty(steps, worlds, memory_size)
 
 
-def play(envs, teacher, init, student, args, iteration):
+def play(envs, teacher, init, student, initial, args, iteration):
     """One iteration's rollout, and the driving policy's episodes (progress, |cte|, collision)."""
-    memory_size = int(init.recurrent_size)
-    initial = init.initial_state(1)  # the memory at an episode's start, as `evaluate` begins it
+    memory_size = initial.shape[1]
     obs, _ = envs.reset(seed=args.seed + iteration)
     starts = np.ones(args.worlds, dtype=bool)
     memory = initial.expand(args.worlds, memory_size)
@@ -128,8 +132,7 @@ def play(envs, teacher, init, student, args, iteration):
             rollout.features[t], rollout.targets[t] = features, target
             rollout.starts[t], rollout.memory[t] = start, memory
             rollout.last_observations = observation
-            memory = student.remember(features, memory)
-            action = torch.clamp(student.mean(features, memory), -1.0, 1.0)
+            action, memory = student.act(features, memory)
         driving = target if iteration == 0 else action
         obs, _, terminated, truncated, info = envs.step(driving.numpy().astype(np.float32))
         starts = terminated | truncated
@@ -177,8 +180,8 @@ def write_student(init, student, rollout, path):
     with torch.no_grad():
         for name in student.names:
             parameters[name].copy_(student.weights[name])
-        features, memory = rollout.features[-1], rollout.memory[-1]
-        expected = torch.clamp(student.mean(features, student.remember(features, memory)), -1, 1)
+        memory = rollout.memory[-1]
+        expected, _ = student.act(rollout.features[-1], memory)
     temporary = f"{path}.tmp"
     init.save(temporary)
     written = torch.jit.load(temporary)
@@ -235,26 +238,24 @@ def parse(argv):
 
 def load(args):
     """The teacher, INIT as TorchScript, and the student made from INIT."""
-    try:
-        teacher = colav.Policy(args.teacher)
-    except (ValueError, RuntimeError) as error:
-        raise BadInput(f"{args.teacher}: {str(error).splitlines()[0]}")
-    try:
-        init = torch.jit.load(args.init)
-    except (ValueError, RuntimeError) as error:
-        raise BadInput(f"{args.init}: not a TorchScript policy ({str(error).splitlines()[0]})")
-    if not hasattr(init, "recurrent_size") or int(init.recurrent_size) <= 0:
+    policies = []
+    for path in (args.teacher, args.init):
+        try:
+            policies.append(colav.Policy(path))
+        except (ValueError, RuntimeError) as error:
+            raise BadInput(f"{path}: {str(error).splitlines()[0]}")
+    teacher, init = policies
+    if init.recurrent_size <= 0:
         raise BadInput(f"{args.init}: not a recurrent policy (train_ppo with "
                        "policy.recurrent_size > 0)")
-    init_settings = colav.Policy(args.init).observation_settings
-    if init_settings != teacher.observation_settings:
-        raise BadInput(f"{args.init}: observation settings {init_settings} differ from the "
-                       f"teacher's {teacher.observation_settings}")
+    if init.observation_settings != teacher.observation_settings:
+        raise BadInput(f"{args.init}: observation settings {init.observation_settings} differ "
+                       f"from the teacher's {teacher.observation_settings}")
     try:
-        student = Student(dict(init.named_parameters()))
+        student = Student(dict(init.module.named_parameters()))
     except BadInput as error:
         raise BadInput(f"{args.init}: {error}")
-    return teacher, init, student
+    return teacher, init.module, student
 
 
 def main(argv):
@@ -269,20 +270,21 @@ def main(argv):
     optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
     envs = colav.make_vec(args.worlds, seed=args.seed, num_threads=args.threads,
                           **teacher.observation_settings)
+    initial = init.initial_state(1)  # the memory at an episode's start, as `evaluate` begins it
+    kept = [min(i + 1, args.keep) for i in range(args.iterations)]  # rollouts trained on
     rollouts = []
     began = time.monotonic()
     playing = training = 0.0  # seconds so far
     for iteration in range(args.iterations):
         started = time.monotonic()
-        rollout, episodes = play(envs, teacher, init, student, args, iteration)
+        rollout, episodes = play(envs, teacher, init, student, initial, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
-        loss = train(student, optimiser, rollouts, init.initial_state(1), args, generator)
+        loss = train(student, optimiser, rollouts, initial, args, generator)
         write_student(init, student, rollouts[-1], args.out)
         playing, training = playing + played - started, training + time.monotonic() - played
         # Training time grows with the rollouts kept: ETA from the seconds per play and per
         # rollout trained on.
-        kept = [min(i + 1, args.keep) for i in range(args.iterations)]
         left = (playing / (iteration + 1) * (args.iterations - iteration - 1)
                 + training / sum(kept[:iteration + 1]) * sum(kept[iteration + 1:]))
         elapsed = time.monotonic() - began
