@@ -11,6 +11,10 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
    `train_ppo` trains in, under the policies' observation settings). The teacher drives in the
    first iteration, the student in the others; the teacher's deterministic action is recorded
    at every step (DAgger: the student learns what to do in the states it reaches itself).
+   With --traps K, the last K of the WORLDS replay, episode after episode, K training
+   scenarios in which INIT alone times out (found first, by playing INIT in other training
+   worlds): a stall is rare in the paper's worlds, and the teacher's way out of one is learnt
+   only where the student stalls.
 2. The student trains on the last KEEP iterations' steps, in sequences of SEQUENCE steps that
    start from the memory the student had there, for EPOCHS passes. The loss is the squared
    error between its action mean and the teacher's action, except beyond a bound the teacher
@@ -40,6 +44,9 @@ import colav
 RECURRENT = ("recurrent_weight_ih", "recurrent_weight_hh", "recurrent_bias_ih",
              "recurrent_bias_hh")
 ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
+TRAP_SEARCH_WORLDS = 64  # training worlds INIT plays at once while the traps are searched for
+TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episodes in all)
+TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
 
 
 class BadInput(Exception):
@@ -112,10 +119,70 @@ class Rollout:
         self.memory = torch.empty(steps, worlds, memory_size)
 
 
-def play(envs, teacher, init, student, initial, args, iteration):
-    """One iteration's rollout, and the driving policy's episodes (progress, |cte|, collision)."""
+def timed_out(metrics, i):
+    """Whether world i's finished episode ran out of time: neither at the goal nor collided."""
+    return not metrics["goal_reached"][i] and not metrics["collision"][i]
+
+
+def find_traps(args, settings):
+    """Up to --traps training scenarios in which INIT alone times out, in the order found."""
+    if args.traps == 0:
+        return []
+    searcher = colav.Policy(args.init)  # its own memories, one per search world
+    seed = args.seed + TRAP_SEARCH_SEED
+    envs = colav.make_vec(TRAP_SEARCH_WORLDS, seed=seed, num_threads=args.threads, **settings)
+    obs, _ = envs.reset(seed=seed)
+    starts = np.ones(TRAP_SEARCH_WORLDS, dtype=bool)
+    episode = np.zeros(TRAP_SEARCH_WORLDS, dtype=np.int64)  # each world's episode under way
+    traps = []
+    for _ in range(TRAP_SEARCH_STEPS):
+        obs, _, terminated, truncated, info = envs.step(searcher.act(obs, starts))
+        starts = terminated | truncated
+        for i in np.nonzero(info.get("_episode_metrics", []))[0]:
+            if timed_out(info["episode_metrics"], i):
+                episode_seed = colav.training_episode_seed(seed, int(i), int(episode[i]))
+                traps.append(colav.training_scenario(episode_seed))
+                if len(traps) == args.traps:
+                    return traps
+            episode[i] += 1
+    return traps
+
+
+class Worlds:
+    """The worlds an iteration plays, as one vector: the paper's training worlds, then one world
+    per trap replaying its scenario in every episode."""
+
+    def __init__(self, args, settings, traps):
+        self.sets = [colav.make_vec(args.worlds - len(traps), seed=args.seed,
+                                    num_threads=args.threads, **settings)]
+        if traps:
+            self.sets.append(colav.make_vec(scenarios=traps, num_threads=args.threads,
+                                            **settings))
+        self.sizes = [args.worlds - len(traps)] + ([len(traps)] if traps else [])
+
+    def reset(self, seed):
+        return np.concatenate([envs.reset(seed=seed)[0] for envs in self.sets])
+
+    def step(self, actions):
+        """(observations, episode starts, [(progress, |cte|, collision, time-out)] of the
+        episodes that ended), the paper's worlds' rows first."""
+        observations, starts, episodes, first = [], [], [], 0
+        for envs, size in zip(self.sets, self.sizes):
+            obs, _, terminated, truncated, info = envs.step(actions[first:first + size])
+            first += size
+            observations.append(obs)
+            starts.append(terminated | truncated)
+            metrics = info.get("episode_metrics")
+            for i in np.nonzero(info.get("_episode_metrics", []))[0]:
+                episodes.append((metrics["progress"][i], metrics["mean_abs_cte"][i],
+                                 metrics["collision"][i], timed_out(metrics, i)))
+        return np.concatenate(observations), np.concatenate(starts), episodes
+
+
+def play(worlds, teacher, init, student, initial, args, iteration):
+    """One iteration's rollout, and the driving policy's episodes."""
     memory_size = initial.shape[1]
-    obs, _ = envs.reset(seed=args.seed + iteration)
+    obs = worlds.reset(seed=args.seed + iteration)
     starts = np.ones(args.worlds, dtype=bool)
     memory = initial.expand(args.worlds, memory_size)
     rollout = None
@@ -134,13 +201,8 @@ def play(envs, teacher, init, student, initial, args, iteration):
             rollout.last_observations = observation
             action, memory = student.act(features, memory)
         driving = target if iteration == 0 else action
-        obs, _, terminated, truncated, info = envs.step(driving.numpy().astype(np.float32))
-        starts = terminated | truncated
-        if "episode_metrics" in info:
-            metrics = info["episode_metrics"]
-            for i in np.nonzero(info["_episode_metrics"])[0]:
-                episodes.append((metrics["progress"][i], metrics["mean_abs_cte"][i],
-                                 metrics["collision"][i]))
+        obs, starts, ended = worlds.step(driving.numpy().astype(np.float32))
+        episodes += ended
     return rollout, episodes
 
 
@@ -196,9 +258,9 @@ def describe(episodes):
     """The episodes that ended in a rollout, in a few words."""
     if not episodes:
         return "no episode to its end"
-    progress, cte, collided = (np.mean(column) for column in zip(*episodes))
+    progress, cte, collided, late = (np.mean(column) for column in zip(*episodes))
     return (f"{len(episodes)} episodes (progress {100 * progress:.1f} %, cte {cte:.1f} m, "
-            f"collisions {100 * collided:.1f} %)")
+            f"collisions {100 * collided:.1f} %, time-outs {100 * late:.1f} %)")
 
 
 def parse(argv):
@@ -209,6 +271,8 @@ def parse(argv):
     parser.add_argument("--iterations", type=int, default=8, help="DAgger iterations")
     parser.add_argument("--steps", type=int, default=2048, help="steps per world and iteration")
     parser.add_argument("--worlds", type=int, default=32, help="training worlds played at once")
+    parser.add_argument("--traps", type=int, default=0,
+                        help="worlds replaying training scenarios INIT times out in")
     parser.add_argument("--keep", type=int, default=6, help="last iterations trained on")
     parser.add_argument("--epochs", type=int, default=3, help="passes over the kept steps")
     parser.add_argument("--sequence", type=int, default=32, help="steps per training sequence")
@@ -225,6 +289,8 @@ def parse(argv):
         value = getattr(args, name)
         if not low <= value <= high:
             raise BadInput(f"--{name} {value}: expected {low} to {high}")
+    if not 0 <= args.traps < args.worlds:
+        raise BadInput(f"--traps {args.traps}: expected 0 to --worlds - 1 ({args.worlds - 1})")
     if args.sequence > args.steps:
         raise BadInput(f"--sequence {args.sequence}: longer than --steps {args.steps}")
     for name in ("learning_rate", "max_grad_norm"):
@@ -268,8 +334,10 @@ def main(argv):
     torch.set_num_threads(args.threads)
     generator = torch.Generator().manual_seed(args.seed)
     optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
-    envs = colav.make_vec(args.worlds, seed=args.seed, num_threads=args.threads,
-                          **teacher.observation_settings)
+    traps = find_traps(args, teacher.observation_settings)
+    if args.traps:
+        print(f"found {len(traps)} of {args.traps} traps", flush=True)
+    worlds = Worlds(args, teacher.observation_settings, traps)
     initial = init.initial_state(1)  # the memory at an episode's start, as `evaluate` begins it
     kept = [min(i + 1, args.keep) for i in range(args.iterations)]  # rollouts trained on
     rollouts = []
@@ -277,7 +345,7 @@ def main(argv):
     playing = training = 0.0  # seconds so far
     for iteration in range(args.iterations):
         started = time.monotonic()
-        rollout, episodes = play(envs, teacher, init, student, initial, args, iteration)
+        rollout, episodes = play(worlds, teacher, init, student, initial, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
         loss = train(student, optimiser, rollouts, initial, args, generator)

@@ -1,13 +1,16 @@
 """scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
-bad input is refused."""
+its trap worlds replay scenarios INIT times out in; bad input is refused."""
 
+import importlib.util
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 import torch
 
+import colav
 from conftest import HeldAction, SOURCE_DIR, run_program
 
 SCRIPT = SOURCE_DIR / "scripts" / "distill_policy.py"
@@ -91,6 +94,51 @@ def test_the_student_learns_the_teachers_action_and_the_same_seed_gives_the_same
                        actions(tmp_path / "b.pt", observations()))
 
 
+def script_module():
+    spec = importlib.util.spec_from_file_location("distill_policy", SCRIPT)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_trap_worlds_replay_scenarios_init_alone_times_out_in(recurrent_policy, held_policy,
+                                                                  tmp_path):
+    distill = script_module()
+    args = distill.parse([str(held_policy), str(recurrent_policy), "--out",
+                          str(tmp_path / "s.pt"), "--traps", "4", "--worlds", "8",
+                          "--threads", "1", "--seed", "5"])
+    settings = colav.Policy(str(recurrent_policy)).observation_settings
+    traps = distill.find_traps(args, settings)
+    assert len(traps) == 4
+    # INIT alone, in each trap, ends its episode neither at the goal nor in a collision.
+    envs = colav.make_vec(scenarios=traps, num_threads=1, **settings)
+    init = colav.Policy(str(recurrent_policy))
+    obs, _ = envs.reset()
+    starts, ended = np.ones(4, dtype=bool), {}
+    while len(ended) < 4:
+        obs, _, terminated, truncated, info = envs.step(init.act(obs, starts))
+        starts = terminated | truncated
+        for i in np.nonzero(info.get("_episode_metrics", []))[0]:
+            metrics = info["episode_metrics"]
+            ended.setdefault(int(i), (metrics["goal_reached"][i], metrics["collision"][i],
+                                      metrics["steps"][i]))
+    assert all(not goal and not collided and steps == settings.get("max_steps", colav.env_settings()["max_steps"][0])
+               for goal, collided, steps in ended.values()), ended
+    # An iteration's worlds: the paper's first, the traps last, each replaying its scenario.
+    worlds = distill.Worlds(args, settings, traps)
+    first = worlds.reset(seed=5)
+    assert first.shape == (8, colav.OBSERVATION_SIZE)
+    np.testing.assert_array_equal(first[:4], colav.make_vec(4, seed=5, **settings).reset(seed=5)[0])
+    np.testing.assert_array_equal(first[4:], envs.reset()[0])
+
+
+def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
+    result = run(held_policy, recurrent_policy, "--out", tmp_path / "s.pt", "--traps", 1, *SMALL)
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("found 1 of 1 traps\n"), result.stdout
+    assert (tmp_path / "s.pt").exists()
+
+
 def refusal(result):
     assert result.returncode == 2, result.stdout + result.stderr
     assert len(result.stderr.strip().splitlines()) == 1, result.stderr
@@ -109,6 +157,8 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--steps", 64, "--sequence", 99))
     assert "--worlds 0" in refusal(run(held_policy, recurrent_policy, "--out", out,
                                        "--worlds", 0))
+    assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
     assert "no such folder" in refusal(run(held_policy, recurrent_policy, "--out",
                                            tmp_path / "nowhere" / "s.pt"))
     assert not out.exists()
