@@ -27,8 +27,11 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
         --out STUDENT.pt [--iterations 8] [--seed 0] [...]
 
 Everything random follows --seed (the worlds' episodes and the order of the sequences), so
-the same seed and thread count give the same file. An interrupted run is not resumed: run it
-again. Bad input: one line naming the argument or file, exit status 2.
+the same seed and thread count give the same file. After every iteration the run's state (the
+student, Adam's moments, the kept rollouts, the sequence order's generator) is written to
+STUDENT.pt.state (a temporary file, then renamed; removed at the end): the same command with
+--resume carries on after the last iteration written and ends with the uninterrupted run's
+file, byte for byte. Bad input: one line naming the argument or file, exit status 2.
 """
 
 import argparse
@@ -47,6 +50,7 @@ ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
 TRAP_SEARCH_WORLDS = 64  # training worlds INIT plays at once while the traps are searched for
 TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episodes in all)
 TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
+STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator", "rollouts"}
 
 
 class BadInput(Exception):
@@ -263,6 +267,50 @@ def describe(episodes):
             f"collisions {100 * collided:.1f} %, time-outs {100 * late:.1f} %)")
 
 
+def state_path(args):
+    return f"{args.out}.state"
+
+
+def run_settings(args):
+    """What a resumed run must share with the one that wrote the state."""
+    return {name: value for name, value in vars(args).items() if name != "resume"}
+
+
+def save_state(args, iteration, student, optimiser, generator, rollouts):
+    """The run after `iteration` (0 first), to a temporary file, then renamed."""
+    path = state_path(args)
+    torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,  # STATE_KEYS
+                "student": student.state_dict(), "optimiser": optimiser.state_dict(),
+                "generator": generator.get_state(), "rollouts": [vars(r) for r in rollouts]},
+               f"{path}.tmp")
+    os.replace(f"{path}.tmp", path)
+
+
+def load_state(args, student, optimiser, generator):
+    """(iterations done, kept rollouts) of the state --resume carries on from."""
+    path = state_path(args)
+    try:
+        state = torch.load(path)
+    except Exception as error:  # noqa: BLE001: whatever torch.load fails on, the file is bad
+        raise BadInput(f"--resume: {path}: {(str(error) or type(error).__name__).splitlines()[0]}")
+    if not isinstance(state, dict) or set(state) != STATE_KEYS:
+        raise BadInput(f"--resume: {path}: not a distill_policy.py state")
+    differing = [name for name, value in run_settings(args).items()
+                 if state["settings"].get(name) != value]
+    if differing:
+        raise BadInput(f"--resume: {path} was written with --{differing[0].replace('_', '-')} "
+                       f"{state['settings'].get(differing[0])}, not {getattr(args, differing[0])}")
+    student.load_state_dict(state["student"])
+    optimiser.load_state_dict(state["optimiser"])
+    generator.set_state(state["generator"])
+    rollouts = []
+    for fields in state["rollouts"]:
+        rollout = Rollout.__new__(Rollout)
+        vars(rollout).update(fields)
+        rollouts.append(rollout)
+    return state["iterations_done"], rollouts
+
+
 def parse(argv):
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("teacher", metavar="TEACHER.pt", help="the policy to imitate")
@@ -281,6 +329,8 @@ def parse(argv):
     parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
     parser.add_argument("--seed", type=int, default=0, help="worlds' episodes, sequence order")
     parser.add_argument("--threads", type=int, default=2, help="PyTorch and simulator threads")
+    parser.add_argument("--resume", action="store_true",
+                        help="carry on from STUDENT.pt.state, written by the same command")
     args = parser.parse_args(argv)
     bounds = {"iterations": (1, 1000), "steps": (2, 100000), "worlds": (1, 1024),
               "keep": (1, 1000), "epochs": (1, 100), "sequence": (2, 1000),
@@ -328,37 +378,43 @@ def main(argv):
     try:
         args = parse(argv)
         teacher, init, student = load(args)
+        generator = torch.Generator().manual_seed(args.seed)
+        optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
+        done, rollouts = (load_state(args, student, optimiser, generator) if args.resume
+                          else (0, []))
     except BadInput as error:
         print(f"distill_policy: error: {error}", file=sys.stderr)
         return 2
     torch.set_num_threads(args.threads)
-    generator = torch.Generator().manual_seed(args.seed)
-    optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
     traps = find_traps(args, teacher.observation_settings)
     if args.traps:
         print(f"found {len(traps)} of {args.traps} traps", flush=True)
     worlds = Worlds(args, teacher.observation_settings, traps)
     initial = init.initial_state(1)  # the memory at an episode's start, as `evaluate` begins it
     kept = [min(i + 1, args.keep) for i in range(args.iterations)]  # rollouts trained on
-    rollouts = []
+    if done:
+        print(f"resuming after iteration {done}/{args.iterations}", flush=True)
     began = time.monotonic()
-    playing = training = 0.0  # seconds so far
-    for iteration in range(args.iterations):
+    playing = training = 0.0  # seconds so far, in this process
+    for iteration in range(done, args.iterations):
         started = time.monotonic()
         rollout, episodes = play(worlds, teacher, init, student, initial, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
         loss = train(student, optimiser, rollouts, initial, args, generator)
         write_student(init, student, rollouts[-1], args.out)
+        save_state(args, iteration, student, optimiser, generator, rollouts)
         playing, training = playing + played - started, training + time.monotonic() - played
         # Training time grows with the rollouts kept: ETA from the seconds per play and per
         # rollout trained on.
-        left = (playing / (iteration + 1) * (args.iterations - iteration - 1)
-                + training / sum(kept[:iteration + 1]) * sum(kept[iteration + 1:]))
+        left = (playing / (iteration + 1 - done) * (args.iterations - iteration - 1)
+                + training / sum(kept[done:iteration + 1]) * sum(kept[iteration + 1:]))
         elapsed = time.monotonic() - began
         print(f"iteration {iteration + 1}/{args.iterations}: "
               f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}, "
               f"loss {loss:.4f}, elapsed {elapsed:.0f} s, ETA {left:.0f} s", flush=True)
+    if os.path.exists(state_path(args)):
+        os.remove(state_path(args))
     print(f"wrote {args.out}")
     return 0
 

@@ -139,6 +139,35 @@ def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
     assert (tmp_path / "s.pt").exists()
 
 
+def test_an_interrupted_run_resumes_to_the_same_file(recurrent_policy, held_policy, tmp_path):
+    whole = run(held_policy, recurrent_policy, "--out", tmp_path / "whole.pt", "--traps", 1,
+                *SMALL)
+    assert whole.returncode == 0, whole.stderr
+    assert not (tmp_path / "whole.pt.state").exists()
+    # Stopped as soon as the second of three iterations is reported, then run again.
+    command = [sys.executable, str(SCRIPT), str(held_policy), str(recurrent_policy), "--out",
+               str(tmp_path / "cut.pt"), "--traps", "1", *map(str, SMALL)]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
+    for line in process.stdout:
+        if line.startswith("iteration 2/3"):
+            process.kill()
+            break
+    process.wait()
+    assert (tmp_path / "cut.pt.state").exists()
+    other = subprocess.run(command + ["--resume", "--seed", "1"], capture_output=True, text=True)
+    assert "cut.pt.state was written with --seed 0, not 1" in refusal(other)
+    resumed = subprocess.run(command + ["--resume"], capture_output=True, text=True)
+    assert resumed.returncode == 0, resumed.stderr
+    assert "resuming after iteration 2/3" in resumed.stdout, resumed.stdout
+    reported = [line.split(":")[0] for line in resumed.stdout.splitlines()
+                if line.startswith("iteration")]
+    assert reported == ["iteration 3/3"], resumed.stdout
+    assert not (tmp_path / "cut.pt.state").exists()
+    whole_parameters = dict(torch.jit.load(str(tmp_path / "whole.pt")).named_parameters())
+    for name, value in torch.jit.load(str(tmp_path / "cut.pt")).named_parameters():
+        assert torch.equal(value, whole_parameters[name]), name
+
+
 def refusal(result):
     assert result.returncode == 2, result.stdout + result.stderr
     assert len(result.stderr.strip().splitlines()) == 1, result.stderr
@@ -159,6 +188,8 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
                                        "--worlds", 0))
     assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
+    assert "--resume: " + str(out) + ".state" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--resume"))
     assert "no such folder" in refusal(run(held_policy, recurrent_policy, "--out",
                                            tmp_path / "nowhere" / "s.pt"))
     assert not out.exists()
