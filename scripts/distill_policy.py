@@ -50,7 +50,8 @@ ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
 TRAP_SEARCH_WORLDS = 64  # training worlds INIT plays at once while the traps are searched for
 TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episodes in all)
 TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
-STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator", "rollouts"}
+STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator",
+              "rollouts"}  # what save_state writes
 
 
 class BadInput(Exception):
@@ -121,6 +122,13 @@ class Rollout:
         self.targets = torch.empty(steps, worlds, 2)
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
         self.memory = torch.empty(steps, worlds, memory_size)
+
+    @classmethod
+    def restored(cls, fields):
+        """A rollout from its fields as save_state wrote them."""
+        rollout = cls(0, 0, 0, 0)
+        vars(rollout).update(fields)
+        return rollout
 
 
 def timed_out(metrics, i):
@@ -279,7 +287,7 @@ def run_settings(args):
 def save_state(args, iteration, student, optimiser, generator, rollouts):
     """The run after `iteration` (0 first), to a temporary file, then renamed."""
     path = state_path(args)
-    torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,  # STATE_KEYS
+    torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,
                 "student": student.state_dict(), "optimiser": optimiser.state_dict(),
                 "generator": generator.get_state(), "rollouts": [vars(r) for r in rollouts]},
                f"{path}.tmp")
@@ -303,12 +311,7 @@ def load_state(args, student, optimiser, generator):
     student.load_state_dict(state["student"])
     optimiser.load_state_dict(state["optimiser"])
     generator.set_state(state["generator"])
-    rollouts = []
-    for fields in state["rollouts"]:
-        rollout = Rollout.__new__(Rollout)
-        vars(rollout).update(fields)
-        rollouts.append(rollout)
-    return state["iterations_done"], rollouts
+    return state["iterations_done"], [Rollout.restored(fields) for fields in state["rollouts"]]
 
 
 def parse(argv):

@@ -122,7 +122,8 @@ def test_the_trap_worlds_replay_scenarios_init_alone_times_out_in(recurrent_poli
             metrics = info["episode_metrics"]
             ended.setdefault(int(i), (metrics["goal_reached"][i], metrics["collision"][i],
                                       metrics["steps"][i]))
-    assert all(not goal and not collided and steps == settings.get("max_steps", colav.env_settings()["max_steps"][0])
+    limit = settings.get("max_steps", colav.env_settings()["max_steps"][0])
+    assert all(not goal and not collided and steps == limit
                for goal, collided, steps in ended.values()), ended
     # An iteration's worlds: the paper's first, the traps last, each replaying its scenario.
     worlds = distill.Worlds(args, settings, traps)
