@@ -131,6 +131,11 @@ class Rollout:
         return rollout
 
 
+def finished_worlds(info):
+    """The worlds whose episode ended on the step that returned `info`."""
+    return np.nonzero(info.get("_episode_metrics", []))[0]
+
+
 def timed_out(metrics, i):
     """Whether world i's finished episode ran out of time: neither at the goal nor collided."""
     return not metrics["goal_reached"][i] and not metrics["collision"][i]
@@ -150,7 +155,7 @@ def find_traps(args, settings):
     for _ in range(TRAP_SEARCH_STEPS):
         obs, _, terminated, truncated, info = envs.step(searcher.act(obs, starts))
         starts = terminated | truncated
-        for i in np.nonzero(info.get("_episode_metrics", []))[0]:
+        for i in finished_worlds(info):
             if timed_out(info["episode_metrics"], i):
                 episode_seed = colav.training_episode_seed(seed, int(i), int(episode[i]))
                 traps.append(colav.training_scenario(episode_seed))
@@ -170,22 +175,22 @@ class Worlds:
         if traps:
             self.sets.append(colav.make_vec(scenarios=traps, num_threads=args.threads,
                                             **settings))
-        self.sizes = [args.worlds - len(traps)] + ([len(traps)] if traps else [])
 
     def reset(self, seed):
         return np.concatenate([envs.reset(seed=seed)[0] for envs in self.sets])
 
     def step(self, actions):
         """(observations, episode starts, [(progress, |cte|, collision, time-out)] of the
-        episodes that ended), the paper's worlds' rows first."""
+        episodes that ended), the paper's worlds' rows first; new arrays, which later steps
+        do not overwrite."""
         observations, starts, episodes, first = [], [], [], 0
-        for envs, size in zip(self.sets, self.sizes):
-            obs, _, terminated, truncated, info = envs.step(actions[first:first + size])
-            first += size
+        for envs in self.sets:
+            obs, _, terminated, truncated, info = envs.step(actions[first:first + envs.num_envs])
+            first += envs.num_envs
             observations.append(obs)
             starts.append(terminated | truncated)
             metrics = info.get("episode_metrics")
-            for i in np.nonzero(info.get("_episode_metrics", []))[0]:
+            for i in finished_worlds(info):
                 episodes.append((metrics["progress"][i], metrics["mean_abs_cte"][i],
                                  metrics["collision"][i], timed_out(metrics, i)))
         return np.concatenate(observations), np.concatenate(starts), episodes
@@ -200,9 +205,9 @@ def play(worlds, teacher, init, student, initial, args, iteration):
     rollout = None
     episodes = []
     for t in range(args.steps):
-        observation = torch.from_numpy(obs.copy())
-        target = torch.from_numpy(teacher.act(obs, starts).copy())
-        start = torch.from_numpy(starts.copy())
+        observation = torch.from_numpy(obs)
+        target = torch.from_numpy(teacher.act(obs, starts))
+        start = torch.from_numpy(starts)
         memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
             features = init.features(observation)

@@ -15,10 +15,10 @@ that resamples training seeds (A's seed k with B's seed k) and scenarios indepen
 EPISODES.csv is a study's eval/study/episodes.csv (or evaluate's episodes.csv); CONFIG the
 configuration's name there (its rows are CONFIG.seed_K), or a single agent's (rows named CONFIG,
 such as the authors' `ref.shallow_locked_3m`), which then pairs with every seed of the other.
-Both must hold the same seeds, each over the same scenarios with the same scenario seeds. Metrics: progress (percentage points),
-cross-track error (m), collisions and time-outs (percentage points of episodes; a time-out is an
-episode truncated without a collision or the goal). Bad input: one line naming the argument or
-file, exit status 2.
+Both must hold the same seeds, each over the same scenarios with the same scenario seeds.
+Metrics: progress (percentage points), cross-track error (m), collisions and time-outs
+(percentage points of episodes; a time-out is an episode truncated without a collision or the
+goal). Bad input: one line naming the argument or file, exit status 2.
 """
 
 import argparse
