@@ -146,7 +146,8 @@ def compare_at_goal(rows_a, rows_b):
     if not both:
         return 0, math.nan, math.nan, math.nan
     actual = [wins(a["progress"], b["progress"]) for a, b in both]
-    predicted = [wins(b["predicted_short_of_end_m"], a["predicted_short_of_end_m"]) for a, b in both]
+    predicted = [wins(b["predicted_short_of_end_m"], a["predicted_short_of_end_m"])
+                 for a, b in both]
     named = [x == y for x, y in zip(actual, predicted)]
     return len(both), statistics.fmean(actual), statistics.fmean(predicted), statistics.fmean(named)
 
@@ -204,8 +205,9 @@ def main():
             continue
         side = [row["side_offset_m"] for row in at_goal]
         short = [row["short_of_end_m"] for row in at_goal]
-        print(f"  {name}: {len(at_goal)} of {len(rows)}; beside the path {statistics.fmean(side):.2f}"
-              f" m ({statistics.median(side):.2f}), before its end {statistics.fmean(short):.2f} m "
+        print(f"  {name}: {len(at_goal)} of {len(rows)}; beside the path "
+              f"{statistics.fmean(side):.2f} m ({statistics.median(side):.2f}), "
+              f"before its end {statistics.fmean(short):.2f} m "
               f"({statistics.median(short):.2f})")
     print("A over B where both reached the goal: P(more progress), P predicted from the side "
           "offsets, share named")

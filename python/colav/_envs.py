@@ -269,7 +269,8 @@ class VectorEnv(_VectorEnvBase):
 
     def step(self, actions):
         obs, reward, terminated, truncated, finished = self._core.step(actions)
-        return obs, reward, terminated, truncated, (self._core.finished_episodes() if finished else {})
+        info = self._core.finished_episodes() if finished else {}
+        return obs, reward, terminated, truncated, info
 
     def render(self):
         """No render modes yet: returns None."""

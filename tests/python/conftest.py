@@ -1,5 +1,5 @@
-"""Shared fixtures and stand-ins of the Python tests. CTest (tests/CMakeLists.txt) sets PYTHONPATH to the
-build's python folder and COLAV_BIN_DIR, COLAV_SOURCE_DIR, COLAV_GOLDEN_DIR."""
+"""Shared fixtures and stand-ins of the Python tests. CTest (tests/CMakeLists.txt) sets
+PYTHONPATH to the build's python folder and COLAV_BIN_DIR, COLAV_SOURCE_DIR, COLAV_GOLDEN_DIR."""
 
 import os
 import pathlib
@@ -10,7 +10,8 @@ import torch
 
 SOURCE_DIR = pathlib.Path(os.environ.get("COLAV_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 BIN_DIR = pathlib.Path(os.environ.get("COLAV_BIN_DIR", SOURCE_DIR / "build" / "bin"))
-GOLDEN_DIR = pathlib.Path(os.environ.get("COLAV_GOLDEN_DIR", SOURCE_DIR.parent / "shared" / "golden"))
+GOLDEN_DIR = pathlib.Path(os.environ.get("COLAV_GOLDEN_DIR",
+                                          SOURCE_DIR.parent / "shared" / "golden"))
 SCENARIO_FILES = sorted((SOURCE_DIR / "configs" / "scenarios").glob("*.yaml"))
 
 

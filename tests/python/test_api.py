@@ -29,7 +29,8 @@ def test_spaces_have_gymnasium_attributes(env):
     assert np.all(env.action_space.low == -1.0) and np.all(env.action_space.high == 1.0)
     if colav.gymnasium is not None:
         assert isinstance(env.observation_space, colav.gymnasium.spaces.Box)
-        base = colav.gymnasium.Env if isinstance(env, colav.Env) else colav.gymnasium.vector.VectorEnv
+        gym = colav.gymnasium
+        base = gym.Env if isinstance(env, colav.Env) else gym.vector.VectorEnv
         assert isinstance(env, base)
 
 

@@ -78,7 +78,8 @@ def test_counts_the_episodes_that_the_replay_ends_otherwise(study, tmp_path):
 @pytest.mark.parametrize("args, message", [
     (("nowhere", "circle"), "nowhere/eval/study/episodes.csv: No such file or directory"),
     (("{study}", "missing"), "episodes.csv: no episodes of configuration 'missing'"),
-    (("{study}", "circle", "--out", "/no/such/folder/x.csv"), "/no/such/folder/x.csv: no such folder"),
+    (("{study}", "circle", "--out", "/no/such/folder/x.csv"),
+     "/no/such/folder/x.csv: no such folder"),
 ])
 def test_bad_input_is_one_line_and_status_2(study, args, message):
     result = run(*(arg.format(study=study) for arg in args))

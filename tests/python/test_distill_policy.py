@@ -73,7 +73,8 @@ def test_a_policy_distilled_into_itself_does_not_change(recurrent_policy, tmp_pa
                        actions(recurrent_policy, observations()))
     written = torch.jit.load(str(tmp_path / "student.pt"))
     assert written.recurrent_size == 4
-    assert written.observation_settings == torch.jit.load(str(recurrent_policy)).observation_settings
+    init = torch.jit.load(str(recurrent_policy))
+    assert written.observation_settings == init.observation_settings
 
 
 def test_the_student_learns_the_teachers_action_and_the_same_seed_gives_the_same_file(
