@@ -12,6 +12,9 @@ import numpy as np
 # them are whole numbers.
 OBSERVATION_KEYS = ("closeness", "scan_history", "scan_history_interval")
 _INTEGER_KEYS = ("scan_history", "scan_history_interval")
+# An ensemble's stall rule keeps two columns last in the state: the pace average, then the number
+# of stalls so far (eval/policy_ensemble.cpp, kStallColumns).
+STALL_COLUMNS = 2
 
 
 def _observation_settings(path, module):
@@ -31,6 +34,17 @@ def _observation_settings(path, module):
     return settings
 
 
+def _has_stall_rule(module, recurrent_size):
+    """Whether `module` is an ensemble_policy file with a stall rule: its state holds the
+    members' states and, last, the rule's STALL_COLUMNS (eval/policy_ensemble.h)."""
+    paths = getattr(module, "member_paths", None)
+    if paths is None:
+        return False
+    members = [getattr(module, f"member_{k}") for k in range(len(paths.splitlines()))]
+    members_size = sum(int(getattr(member, "recurrent_size", 0)) for member in members)
+    return recurrent_size == members_size + STALL_COLUMNS
+
+
 class Policy:
     """A policy.pt with its observation settings and, for a recurrent one, one memory per world.
 
@@ -45,7 +59,8 @@ class Policy:
 
     Attributes: `module` (the TorchScript module), `observation_settings` ({key: value} for
     make_vec: closeness, and scan_history and scan_history_interval when recorded; the authors'
-    agents use their sidecar <policy>.yaml), `recurrent_size` (0: memoryless).
+    agents use their sidecar <policy>.yaml), `recurrent_size` (0: memoryless), `stalls` (an
+    ensemble's stall rule: how often each world's vessel has stalled in its episode).
     """
 
     def __init__(self, path):
@@ -58,7 +73,17 @@ class Policy:
         self.module = torch.jit.load(path)
         self.observation_settings = _observation_settings(path, self.module)
         self.recurrent_size = int(getattr(self.module, "recurrent_size", 0))
+        self._has_stall_rule = _has_stall_rule(self.module, self.recurrent_size)
         self._states = None
+
+    @property
+    def stalls(self):
+        """For an ensemble with a stall rule (ensemble_policy --stall-pace): each world's number
+        of stalls so far in its episode, as its last `act` steered by (float [N], the state's
+        last column, eval/policy_ensemble.h). None for any other policy, or before any `act`."""
+        if not self._has_stall_rule or self._states is None:
+            return None
+        return self._states[:, -1].numpy().copy()
 
     def act(self, obs, episode_starts=None, worlds=None):
         """Deterministic actions float32 [len(worlds), 2] for the rows `worlds` of obs [N, n]

@@ -113,6 +113,29 @@ def test_evaluate_and_colav_run_a_recurrent_ensemble(tmp_path):
     assert (tmp_path / "eval" / "episodes.csv").read_text().count("\n") == 3  # header + 2
 
 
+def test_colav_policy_reads_the_stall_rules_count(tmp_path):
+    members = [save(Recurrent(2, 2), tmp_path / "r.pt"), save(Memoryless(1), tmp_path / "a.pt"),
+               save(Memoryless(2), tmp_path / "b.pt")]
+    assert ensemble("--out", tmp_path / "plain.pt", *members).returncode == 0
+    assert colav.Policy(tmp_path / "plain.pt").stalls is None  # no stall rule
+    assert ensemble("--out", tmp_path / "ruled.pt", "--stall-pace", 0.1, "--stall-steps", 2,
+                    *members).returncode == 0
+    policy = colav.Policy(tmp_path / "ruled.pt")
+    assert policy.stalls is None  # before the first act
+    # World 0 makes no way (surge 0), world 1 cruises at 1 m/s on course (heading error 0).
+    obs = np.random.default_rng(0).random((2, OBSERVATION_SIZE)).astype(np.float32)
+    obs[:, 0], obs[:, 4] = [0.0, 1.0], 0.0
+    # The pace halves each step from 0.5 (2 steps' average) and stalls below 0.1 on the third
+    # step, restarting at 0.5; the count stops at the reliefs' number, 2.
+    counts = []
+    for _ in range(7):
+        policy.act(obs)
+        counts.append(policy.stalls.tolist())
+    assert counts == [[0, 0], [0, 0], [1, 0], [1, 0], [1, 0], [2, 0], [2, 0]]
+    policy.act(obs, np.array([True, False]))
+    assert policy.stalls.tolist() == [0, 0]
+
+
 def test_bad_input_is_one_line_naming_it(tmp_path):
     log = save(Memoryless(1), tmp_path / "log.pt")
     linear = save(Memoryless(2, "env:\n  closeness: linear\n"), tmp_path / "linear.pt")
