@@ -59,8 +59,9 @@ class Policy:
 
     Attributes: `module` (the TorchScript module), `observation_settings` ({key: value} for
     make_vec: closeness, and scan_history and scan_history_interval when recorded; the authors'
-    agents use their sidecar <policy>.yaml), `recurrent_size` (0: memoryless), `stalls` (an
-    ensemble's stall rule: how often each world's vessel has stalled in its episode).
+    agents use their sidecar <policy>.yaml), `recurrent_size` (0: memoryless),
+    `has_stall_rule` (an ensemble_policy file with --stall-pace) and `stalls` (then how often
+    each world's vessel has stalled in its episode).
     """
 
     def __init__(self, path):
@@ -73,7 +74,7 @@ class Policy:
         self.module = torch.jit.load(path)
         self.observation_settings = _observation_settings(path, self.module)
         self.recurrent_size = int(getattr(self.module, "recurrent_size", 0))
-        self._has_stall_rule = _has_stall_rule(self.module, self.recurrent_size)
+        self.has_stall_rule = _has_stall_rule(self.module, self.recurrent_size)
         self._states = None
 
     @property
@@ -81,7 +82,7 @@ class Policy:
         """For an ensemble with a stall rule (ensemble_policy --stall-pace): each world's number
         of stalls so far in its episode, as its last `act` steered by (float [N], the state's
         last column, eval/policy_ensemble.h). None for any other policy, or before any `act`."""
-        if not self._has_stall_rule or self._states is None:
+        if not self.has_stall_rule or self._states is None:
             return None
         return self._states[:, -1].numpy().copy()
 

@@ -117,11 +117,13 @@ def test_colav_policy_reads_the_stall_rules_count(tmp_path):
     members = [save(Recurrent(2, 2), tmp_path / "r.pt"), save(Memoryless(1), tmp_path / "a.pt"),
                save(Memoryless(2), tmp_path / "b.pt")]
     assert ensemble("--out", tmp_path / "plain.pt", *members).returncode == 0
-    assert colav.Policy(tmp_path / "plain.pt").stalls is None  # no stall rule
+    plain = colav.Policy(tmp_path / "plain.pt")
+    plain.act(np.zeros((2, OBSERVATION_SIZE), np.float32))
+    assert not plain.has_stall_rule and plain.stalls is None
     assert ensemble("--out", tmp_path / "ruled.pt", "--stall-pace", 0.1, "--stall-steps", 2,
                     *members).returncode == 0
     policy = colav.Policy(tmp_path / "ruled.pt")
-    assert policy.stalls is None  # before the first act
+    assert policy.has_stall_rule and policy.stalls is None  # before the first act
     # World 0 makes no way (surge 0), world 1 cruises at 1 m/s on course (heading error 0).
     obs = np.random.default_rng(0).random((2, OBSERVATION_SIZE)).astype(np.float32)
     obs[:, 0], obs[:, 4] = [0.0, 1.0], 0.0
