@@ -9,13 +9,15 @@ against path-following the way the configurations do?
     /usr/bin/python3 scripts/seed_front.py STUDY_DIR... --out front.csv
 
 Reads STUDY_DIR/eval/study/episodes.csv (the study's own scenarios) and STUDY_DIR/summary.json
-(each configuration's training steps). Every study must have played the same scenarios (the same
-names and episode seeds). An agent of the same name in several studies (a run reused by copying)
-counts once if its episodes are identical; otherwise each other run is its own configuration,
-named "<config> (<study folder>)". Writes one row per agent
-(means over its episodes: progress %, cte m, collisions %, time-outs %) and prints how many of our
-agents meet each goal, each pair and all three, and how a configuration's seeds trade cross-track
-error against collisions. Bad input: one line naming the file, exit status 2.
+(each configuration's training steps). A folder that holds episodes.csv itself instead (an
+`evaluate --out` folder: agents made outside a study, the distilled students say) is read as a
+study whose training steps are not recorded (its rows' "steps" stay empty). Every study must
+have played the same scenarios (the same names and episode seeds). An agent of the same name in
+several studies (a run reused by copying) counts once if its episodes are identical; otherwise
+each other run is its own configuration, named "<config> (<study folder>)". Writes one row per
+agent (means over its episodes: progress %, cte m, collisions %, time-outs %) and prints how
+many of our agents meet each goal, each pair and all three, and how a configuration's seeds
+trade cross-track error against collisions. Bad input: one line naming the file, exit status 2.
 """
 
 import argparse
@@ -40,9 +42,17 @@ def fail(message):
     sys.exit(2)
 
 
-def read_episodes(study):
+def episodes_path(folder):
+    """(the folder's episodes file, whether the folder is a study's)."""
+    study = os.path.join(folder, "eval", "study", "episodes.csv")
+    evaluation = os.path.join(folder, "episodes.csv")
+    if not os.path.exists(study) and os.path.exists(evaluation):
+        return evaluation, False
+    return study, True
+
+
+def read_episodes(path):
     """{agent: {(scenario, seed): (progress, cte, collision, truncated) as text}}."""
-    path = os.path.join(study, "eval", "study", "episodes.csv")
     agents = {}
     try:
         with open(path, newline="") as file:
@@ -58,7 +68,7 @@ def read_episodes(study):
         fail(f"{path}: {error.strerror}")
     if not agents:
         fail(f"{path}: no episodes")
-    return path, agents
+    return agents
 
 
 def read_steps(study):
@@ -94,8 +104,9 @@ def collect(studies):
     """One record per distinct agent over the studies."""
     records, seen, scenarios, first_path = [], {}, None, None
     for study in studies:
-        path, agents = read_episodes(study)
-        steps = read_steps(study)
+        path, is_study = episodes_path(study)
+        agents = read_episodes(path)
+        steps = read_steps(study) if is_study else {}
         for name, episodes in agents.items():
             if scenarios is None:
                 scenarios, first_path = set(episodes), path
@@ -209,7 +220,8 @@ def write_csv(records, out):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("studies", nargs="+", metavar="STUDY_DIR", help="study folders")
+    parser.add_argument("studies", nargs="+", metavar="STUDY_DIR",
+                        help="study folders (or evaluate --out folders)")
     parser.add_argument("--out", required=True, help="CSV file to write, one row per agent")
     args = parser.parse_args()
     records = collect(args.studies)

@@ -87,6 +87,24 @@ def test_a_different_run_of_the_same_name_is_its_own_configuration(tmp_path):
     assert configs == ["a", "a (two)"]
 
 
+def test_an_evaluate_folder_is_read_without_training_steps(tmp_path):
+    study = make_study(tmp_path / "study", {"a.seed_0": SEEDS_OF_A["a.seed_0"]},
+                       {"a": 3000000})
+    # An evaluate --out folder: episodes.csv at its top, no summary.json.
+    evaluation = make_study(tmp_path / "eval_out", {"d.seed_0": SEEDS_OF_A["a.seed_3"]})
+    (evaluation / "eval" / "study" / "episodes.csv").rename(evaluation / "episodes.csv")
+    (evaluation / "summary.json").unlink()
+    result = seed_front(study, evaluation, "--out", tmp_path / "front.csv")
+    assert result.returncode == 0, result.stderr
+    agents = rows(tmp_path / "front.csv")
+    student = agents["d.seed_0"]
+    assert (student["study"], student["config"], student["seed"], student["steps"]) == \
+        ("eval_out", "d", "0", "")
+    assert float(student["progress"]) == 99.0
+    assert agents["a.seed_0"]["steps"] == "3000000"
+    assert "goal on collisions and progress and cte: 1" in result.stdout.splitlines()
+
+
 def test_studies_that_do_not_fit_are_refused_in_one_line(tmp_path):
     one = make_study(tmp_path / "one", {"a.seed_0": SEEDS_OF_A["a.seed_0"]})
     other = make_study(tmp_path / "other", {"a.seed_1": SEEDS_OF_A["a.seed_1"]},
