@@ -19,6 +19,9 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
    start from the memory the student had there, for EPOCHS passes. The loss is the squared
    error between its action mean and the teacher's action, except beyond a bound the teacher
    reached: a mean past +1 where the teacher acted +1 is not an error (actions are clipped).
+   With --stall-weight W, the steps a relief steers the teacher (an ensemble_policy teacher
+   with a stall rule, from the episode's first stall on) weigh W times the others: they are few,
+   and the student must tell a second stall from a first by its memory alone.
 3. The student is written after every iteration (a temporary file, then renamed), checked
    against the file's own `step`, with INIT's interface, recorded observation settings and
    value layers (which do not act, and are not trained).
@@ -103,23 +106,25 @@ class Student(torch.nn.Module):
         return torch.clamp(self.mean(features, memory), -1.0, 1.0), memory
 
 
-def imitation_loss(mean, target):
-    """Squared error of the action mean, none past a bound the teacher's action sits on."""
+def imitation_loss(mean, target, weights):
+    """Squared error of the action mean, none past a bound the teacher's action sits on, each
+    row's weighed by `weights` [B] (weights of 1 give the plain mean to the bit)."""
     error = mean - target
     error = torch.where(target >= 1.0, torch.clamp(error, max=0.0), error)
     error = torch.where(target <= -1.0, torch.clamp(error, min=0.0), error)
-    return (error * error).mean()
+    return (error * error * weights[:, None]).mean()
 
 
 class Rollout:
-    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], episode starts
-    [T, N] and the student's memory before each step [T, N, H]; the last step's observations
-    [N, O] check the written file."""
+    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2] and their loss
+    weights [T, N], episode starts [T, N] and the student's memory before each step [T, N, H];
+    the last step's observations [N, O] check the written file."""
 
     def __init__(self, steps, worlds, feature_size, memory_size):
         self.last_observations = None
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
+        self.weights = torch.empty(steps, worlds)
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
         self.memory = torch.empty(steps, worlds, memory_size)
 
@@ -207,6 +212,9 @@ def play(worlds, teacher, init, student, initial, args, iteration):
     for t in range(args.steps):
         observation = torch.from_numpy(obs)
         target = torch.from_numpy(teacher.act(obs, starts))
+        weight = torch.ones(args.worlds)
+        if teacher.has_stall_rule:
+            weight[torch.from_numpy(teacher.stalls >= 1)] = args.stall_weight
         start = torch.from_numpy(starts)
         memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
@@ -214,6 +222,7 @@ def play(worlds, teacher, init, student, initial, args, iteration):
             if rollout is None:
                 rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
             rollout.features[t], rollout.targets[t] = features, target
+            rollout.weights[t] = weight
             rollout.starts[t], rollout.memory[t] = start, memory
             rollout.last_observations = observation
             action, memory = student.act(features, memory)
@@ -237,13 +246,15 @@ def train(student, optimiser, rollouts, initial, args, generator):
             pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
                 [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
             features, targets, starts = pick("features"), pick("targets"), pick("starts")
+            weights = pick("weights")
             memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
             loss = 0.0
             for j in range(args.sequence):
                 if j > 0:
                     memory = torch.where(starts[j][:, None], initial, memory)
                 memory = student.remember(features[j], memory)
-                loss = loss + imitation_loss(student.mean(features[j], memory), targets[j])
+                loss = loss + imitation_loss(student.mean(features[j], memory), targets[j],
+                                             weights[j])
             loss = loss / args.sequence
             optimiser.zero_grad()
             loss.backward()
@@ -335,6 +346,8 @@ def parse(argv):
     parser.add_argument("--batch", type=int, default=128, help="sequences per minibatch")
     parser.add_argument("--learning-rate", type=float, default=3e-4, help="Adam's step size")
     parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
+    parser.add_argument("--stall-weight", type=float, default=1.0,
+                        help="loss weight of the steps a relief steers the teacher")
     parser.add_argument("--seed", type=int, default=0, help="worlds' episodes, sequence order")
     parser.add_argument("--threads", type=int, default=2, help="PyTorch and simulator threads")
     parser.add_argument("--resume", action="store_true",
@@ -351,7 +364,7 @@ def parse(argv):
         raise BadInput(f"--traps {args.traps}: expected 0 to --worlds - 1 ({args.worlds - 1})")
     if args.sequence > args.steps:
         raise BadInput(f"--sequence {args.sequence}: longer than --steps {args.steps}")
-    for name in ("learning_rate", "max_grad_norm"):
+    for name in ("learning_rate", "max_grad_norm", "stall_weight"):
         value = getattr(args, name)
         if not 0 < value < 1e3:
             raise BadInput(f"--{name.replace('_', '-')} {value}: expected a positive value")
@@ -372,6 +385,9 @@ def load(args):
     if init.recurrent_size <= 0:
         raise BadInput(f"{args.init}: not a recurrent policy (train_ppo with "
                        "policy.recurrent_size > 0)")
+    if args.stall_weight != 1.0 and not teacher.has_stall_rule:
+        raise BadInput(f"--stall-weight {args.stall_weight}: {args.teacher} has no stall rule "
+                       "(ensemble_policy --stall-pace)")
     if init.observation_settings != teacher.observation_settings:
         raise BadInput(f"{args.init}: observation settings {init.observation_settings} differ "
                        f"from the teacher's {teacher.observation_settings}")

@@ -1,6 +1,7 @@
 """scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
-its trap worlds replay scenarios INIT times out in; bad input is refused."""
+its trap worlds replay scenarios INIT times out in; the steps a teacher's relief steers weigh
+--stall-weight; bad input is refused."""
 
 import importlib.util
 import subprocess
@@ -134,6 +135,51 @@ def test_the_trap_worlds_replay_scenarios_init_alone_times_out_in(recurrent_poli
     np.testing.assert_array_equal(first[4:], envs.reset()[0])
 
 
+@pytest.fixture(scope="module")
+def stalling_teacher(tmp_path_factory):
+    """An ensemble whose first member holds the vessel still (surge -1) and whose relief holds
+    the held policy's action, the stall rule averaging the pace over 2 steps: it stalls within
+    a few steps of each episode's start."""
+    folder = tmp_path_factory.mktemp("stalling")
+    members = []
+    for name, surge in (("still", -1.0), ("going", 0.3)):
+        path = folder / f"{name}.pt"
+        torch.jit.script(HeldAction(surge, -0.2)).save(str(path))
+        path.with_name(f"{name}.pt.yaml").write_text("env:\n  closeness: log\n")
+        members.append(path)
+    run_program("ensemble_policy", "--out", folder / "teacher.pt", "--stall-pace", 0.1,
+                "--stall-steps", 2, *members)
+    return folder / "teacher.pt"
+
+
+def test_the_loss_weighs_each_row():
+    loss = script_module().imitation_loss
+    mean, target = torch.zeros(2, 2), torch.tensor([[0.5, 0.0], [0.0, -0.5]])
+    assert loss(mean, target, torch.ones(2)).item() == 0.125  # (0.25 + 0.25) / 4
+    assert loss(mean, target, torch.tensor([1.0, 3.0])).item() == 0.25  # (0.25 + 0.75) / 4
+
+
+def test_the_steps_a_relief_steers_weigh_the_stall_weight(recurrent_policy, stalling_teacher):
+    distill = script_module()
+    args = distill.parse([str(stalling_teacher), str(recurrent_policy), "--out", "s.pt",
+                          "--worlds", "3", "--steps", "40", "--threads", "1",
+                          "--stall-weight", "4"])
+    teacher, init, student = distill.load(args)
+    settings = teacher.observation_settings
+    rollout, _ = distill.play(distill.Worlds(args, settings, []), teacher, init, student,
+                              init.initial_state(1), args, 0)
+    # The same steps again, the teacher's stall count read at each.
+    replayed, worlds = colav.Policy(str(stalling_teacher)), distill.Worlds(args, settings, [])
+    obs, starts, stalled = worlds.reset(seed=args.seed), np.ones(3, dtype=bool), []
+    for _ in range(args.steps):
+        actions = replayed.act(obs, starts)
+        stalled.append(replayed.stalls >= 1)
+        obs, starts, _ = worlds.step(actions)
+    stalled = torch.from_numpy(np.array(stalled))
+    assert stalled.any() and not stalled.all()
+    torch.testing.assert_close(rollout.weights, torch.where(stalled, 4.0, 1.0))
+
+
 def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
     result = run(held_policy, recurrent_policy, "--out", tmp_path / "s.pt", "--traps", 1, *SMALL)
     assert result.returncode == 0, result.stderr
@@ -188,6 +234,10 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--steps", 64, "--sequence", 99))
     assert "--worlds 0" in refusal(run(held_policy, recurrent_policy, "--out", out,
                                        "--worlds", 0))
+    assert "--stall-weight 2.0: " + str(held_policy) + " has no stall rule" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--stall-weight", 2))
+    assert "--stall-weight 0.0: expected a positive value" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--stall-weight", 0))
     assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
     assert "--resume: " + str(out) + ".state" in refusal(
