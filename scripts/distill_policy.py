@@ -116,15 +116,15 @@ def imitation_loss(mean, target, weights):
 
 
 class Rollout:
-    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2] and their loss
-    weights [T, N], episode starts [T, N] and the student's memory before each step [T, N, H];
-    the last step's observations [N, O] check the written file."""
+    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], whether a relief
+    steered the teacher [T, N], episode starts [T, N] and the student's memory before each step
+    [T, N, H]; the last step's observations [N, O] check the written file."""
 
     def __init__(self, steps, worlds, feature_size, memory_size):
         self.last_observations = None
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
-        self.weights = torch.empty(steps, worlds)
+        self.relieved = torch.empty(steps, worlds, dtype=torch.bool)
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
         self.memory = torch.empty(steps, worlds, memory_size)
 
@@ -212,9 +212,8 @@ def play(worlds, teacher, init, student, initial, args, iteration):
     for t in range(args.steps):
         observation = torch.from_numpy(obs)
         target = torch.from_numpy(teacher.act(obs, starts))
-        weight = torch.ones(args.worlds)
-        if teacher.has_stall_rule:
-            weight[torch.from_numpy(teacher.stalls >= 1)] = args.stall_weight
+        relieved = (torch.from_numpy(teacher.stalls >= 1) if teacher.has_stall_rule
+                    else torch.zeros(args.worlds, dtype=torch.bool))
         start = torch.from_numpy(starts)
         memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
@@ -222,7 +221,7 @@ def play(worlds, teacher, init, student, initial, args, iteration):
             if rollout is None:
                 rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
             rollout.features[t], rollout.targets[t] = features, target
-            rollout.weights[t] = weight
+            rollout.relieved[t] = relieved
             rollout.starts[t], rollout.memory[t] = start, memory
             rollout.last_observations = observation
             action, memory = student.act(features, memory)
@@ -230,6 +229,11 @@ def play(worlds, teacher, init, student, initial, args, iteration):
         obs, starts, ended = worlds.step(driving.numpy().astype(np.float32))
         episodes += ended
     return rollout, episodes
+
+
+def loss_weights(relieved, stall_weight):
+    """Each step's weight in the loss: stall_weight where a relief steered the teacher, else 1."""
+    return torch.where(relieved, stall_weight, 1.0)
 
 
 def train(student, optimiser, rollouts, initial, args, generator):
@@ -246,7 +250,7 @@ def train(student, optimiser, rollouts, initial, args, generator):
             pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
                 [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
             features, targets, starts = pick("features"), pick("targets"), pick("starts")
-            weights = pick("weights")
+            weights = loss_weights(pick("relieved"), args.stall_weight)
             memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
             loss = 0.0
             for j in range(args.sequence):
@@ -434,9 +438,13 @@ def main(argv):
         left = (playing / (iteration + 1 - done) * (args.iterations - iteration - 1)
                 + training / sum(kept[done:iteration + 1]) * sum(kept[iteration + 1:]))
         elapsed = time.monotonic() - began
+        relieved = (f", a relief steering the teacher in "
+                    f"{100 * rollout.relieved.float().mean():.1f} % of steps"
+                    if teacher.has_stall_rule else "")
         print(f"iteration {iteration + 1}/{args.iterations}: "
-              f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}, "
-              f"loss {loss:.4f}, elapsed {elapsed:.0f} s, ETA {left:.0f} s", flush=True)
+              f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}"
+              f"{relieved}, loss {loss:.4f}, elapsed {elapsed:.0f} s, ETA {left:.0f} s",
+              flush=True)
     if os.path.exists(state_path(args)):
         os.remove(state_path(args))
     print(f"wrote {args.out}")

@@ -177,7 +177,19 @@ def test_the_steps_a_relief_steers_weigh_the_stall_weight(recurrent_policy, stal
         obs, starts, _ = worlds.step(actions)
     stalled = torch.from_numpy(np.array(stalled))
     assert stalled.any() and not stalled.all()
-    torch.testing.assert_close(rollout.weights, torch.where(stalled, 4.0, 1.0))
+    assert torch.equal(rollout.relieved, stalled)
+    torch.testing.assert_close(distill.loss_weights(rollout.relieved, args.stall_weight),
+                               torch.where(stalled, 4.0, 1.0))
+
+
+def test_a_run_with_a_stall_weight_reports_the_relieved_steps(recurrent_policy,
+                                                              stalling_teacher, tmp_path):
+    result = run(stalling_teacher, recurrent_policy, "--out", tmp_path / "s.pt",
+                 "--stall-weight", 3, *SMALL)
+    assert result.returncode == 0, result.stderr
+    shares = [float(line.split("steering the teacher in ")[1].split(" %")[0])
+              for line in result.stdout.splitlines() if line.startswith("iteration")]
+    assert len(shares) == 3 and all(0 < share < 100 for share in shares), result.stdout
 
 
 def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
