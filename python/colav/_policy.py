@@ -60,8 +60,8 @@ class Policy:
     Attributes: `module` (the TorchScript module), `observation_settings` ({key: value} for
     make_vec: closeness, and scan_history and scan_history_interval when recorded; the authors'
     agents use their sidecar <policy>.yaml), `recurrent_size` (0: memoryless),
-    `has_stall_rule` (an ensemble_policy file with --stall-pace) and `stalls` (then how often
-    each world's vessel has stalled in its episode).
+    `has_stall_rule` (an ensemble_policy file with --stall-pace), then `stalls` and `pace` (how
+    often each world's vessel has stalled in its episode, and its pace average).
     """
 
     def __init__(self, path):
@@ -82,9 +82,19 @@ class Policy:
         """For an ensemble with a stall rule (ensemble_policy --stall-pace): each world's number
         of stalls so far in its episode, as its last `act` steered by (float [N], the state's
         last column, eval/policy_ensemble.h). None for any other policy, or before any `act`."""
+        return self._stall_column(-1)
+
+    @property
+    def pace(self):
+        """For an ensemble with a stall rule: each world's pace average (m/s) after its last
+        `act`, restarted at each stall (float [N], the state's last column but one). None for
+        any other policy, or before any `act`."""
+        return self._stall_column(-2)
+
+    def _stall_column(self, column):
         if not self.has_stall_rule or self._states is None:
             return None
-        return self._states[:, -1].numpy().copy()
+        return self._states[:, column].numpy().copy()
 
     def act(self, obs, episode_starts=None, worlds=None):
         """Deterministic actions float32 [len(worlds), 2] for the rows `worlds` of obs [N, n]

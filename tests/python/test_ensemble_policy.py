@@ -119,21 +119,26 @@ def test_colav_policy_reads_the_stall_rules_count(tmp_path):
     assert ensemble("--out", tmp_path / "plain.pt", *members).returncode == 0
     plain = colav.Policy(tmp_path / "plain.pt")
     plain.act(np.zeros((2, OBSERVATION_SIZE), np.float32))
-    assert not plain.has_stall_rule and plain.stalls is None
+    assert not plain.has_stall_rule and plain.stalls is None and plain.pace is None
     assert ensemble("--out", tmp_path / "ruled.pt", "--stall-pace", 0.1, "--stall-steps", 2,
                     *members).returncode == 0
     policy = colav.Policy(tmp_path / "ruled.pt")
-    assert policy.has_stall_rule and policy.stalls is None  # before the first act
+    assert policy.has_stall_rule and policy.stalls is None and policy.pace is None
     # World 0 makes no way (surge 0), world 1 cruises at 1 m/s on course (heading error 0).
     obs = np.random.default_rng(0).random((2, OBSERVATION_SIZE)).astype(np.float32)
     obs[:, 0], obs[:, 4] = [0.0, 1.0], 0.0
     # The pace halves each step from 0.5 (2 steps' average) and stalls below 0.1 on the third
     # step, restarting at 0.5; the count stops at the reliefs' number, 2.
-    counts = []
+    counts, paces = [], []
     for _ in range(7):
         policy.act(obs)
         counts.append(policy.stalls.tolist())
+        paces.append(policy.pace.tolist())
     assert counts == [[0, 0], [0, 0], [1, 0], [1, 0], [1, 0], [2, 0], [2, 0]]
+    # World 1's average goes half way to 1 m/s each step.
+    np.testing.assert_allclose(paces, [[0.25, 0.75], [0.125, 0.875], [0.5, 0.9375],
+                                       [0.25, 0.96875], [0.125, 0.984375], [0.5, 0.9921875],
+                                       [0.25, 0.99609375]])
     policy.act(obs, np.array([True, False]))
     assert policy.stalls.tolist() == [0, 0]
 
