@@ -21,7 +21,11 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
    reached: a mean past +1 where the teacher acted +1 is not an error (actions are clipped).
    With --stall-weight W, the steps a relief steers the teacher (an ensemble_policy teacher
    with a stall rule, from the episode's first stall on) weigh W times the others: they are few,
-   and the student must tell a second stall from a first by its memory alone.
+   and the student must tell a second stall from a first by its memory alone. With
+   --stall-memory L, a linear readout of the student's memory, used in training only (the
+   written file has none), learns the teacher's stall rule at every step (its pace average and
+   stall count, colav.Policy.pace and .stalls), its squared error added L times to the loss:
+   the memory is taught to keep what tells a second stall from a first.
 3. The student is written after every iteration (a temporary file, then renamed), checked
    against the file's own `step`, with INIT's interface, recorded observation settings and
    value layers (which do not act, and are not trained).
@@ -53,6 +57,7 @@ ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
 TRAP_SEARCH_WORLDS = 64  # training worlds INIT plays at once while the traps are searched for
 TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episodes in all)
 TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
+STALL_RULE = ("pace", "stalls")  # the teacher's stall-rule readings (colav.Policy) recorded
 STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator",
               "rollouts"}  # what save_state writes
 
@@ -66,7 +71,7 @@ class Student(torch.nn.Module):
     (a GRU cell over [features], then tanh layers over [features, memory], then the action
     layer); `mean` is the action before the clip."""
 
-    def __init__(self, named):
+    def __init__(self, named, stall_readout=False):
         super().__init__()
         self.actor_layers = sorted(int(name.split("_")[-2]) for name in named
                                    if name.startswith("mlp_extractor_policy_net_")
@@ -80,6 +85,14 @@ class Student(torch.nn.Module):
         self.names = names
         self.weights = torch.nn.ParameterDict(
             {name: torch.nn.Parameter(named[name].detach().clone()) for name in names})
+        # The memory's reading of the teacher's stall rule (--stall-memory); zeros at first,
+        # so that making it draws nothing random.
+        self.stall_readout = None
+        if stall_readout:
+            memory_size = named["recurrent_weight_hh"].shape[1]
+            self.stall_readout = torch.nn.Linear(memory_size, len(STALL_RULE))
+            torch.nn.init.zeros_(self.stall_readout.weight)
+            torch.nn.init.zeros_(self.stall_readout.bias)
 
     def remember(self, features, memory):
         w = self.weights
@@ -117,14 +130,16 @@ def imitation_loss(mean, target, weights):
 
 class Rollout:
     """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], whether a relief
-    steered the teacher [T, N], episode starts [T, N] and the student's memory before each step
-    [T, N, H]; the last step's observations [N, O] check the written file."""
+    steered the teacher [T, N] and its stall rule's (pace, stalls) [T, N, 2] (zeros without
+    one), episode starts [T, N] and the student's memory before each step [T, N, H]; the last
+    step's observations [N, O] check the written file."""
 
     def __init__(self, steps, worlds, feature_size, memory_size):
         self.last_observations = None
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
         self.relieved = torch.empty(steps, worlds, dtype=torch.bool)
+        self.stall_rule = torch.empty(steps, worlds, len(STALL_RULE))
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
         self.memory = torch.empty(steps, worlds, memory_size)
 
@@ -212,8 +227,11 @@ def play(worlds, teacher, init, student, initial, args, iteration):
     for t in range(args.steps):
         observation = torch.from_numpy(obs)
         target = torch.from_numpy(teacher.act(obs, starts))
-        relieved = (torch.from_numpy(teacher.stalls >= 1) if teacher.has_stall_rule
-                    else torch.zeros(args.worlds, dtype=torch.bool))
+        stall_rule = torch.zeros(args.worlds, len(STALL_RULE))
+        if teacher.has_stall_rule:
+            stall_rule = torch.from_numpy(np.stack([getattr(teacher, name)
+                                                    for name in STALL_RULE], 1))
+        relieved = stall_rule[:, STALL_RULE.index("stalls")] >= 1
         start = torch.from_numpy(starts)
         memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
@@ -221,7 +239,7 @@ def play(worlds, teacher, init, student, initial, args, iteration):
             if rollout is None:
                 rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
             rollout.features[t], rollout.targets[t] = features, target
-            rollout.relieved[t] = relieved
+            rollout.relieved[t], rollout.stall_rule[t] = relieved, stall_rule
             rollout.starts[t], rollout.memory[t] = start, memory
             rollout.last_observations = observation
             action, memory = student.act(features, memory)
@@ -238,34 +256,40 @@ def loss_weights(relieved, stall_weight):
 
 def train(student, optimiser, rollouts, initial, args, generator):
     """EPOCHS passes over every sequence of the kept rollouts, the memory restarting at
-    `initial` at each episode's start; the mean loss of the last pass."""
+    `initial` at each episode's start; the mean imitation loss and the mean squared error of
+    the stall readout (0 without one) of the last pass."""
     windows = [(r, t, n) for r in range(len(rollouts))
                for t in range(0, args.steps - args.sequence + 1, args.sequence // 2)
                for n in range(args.worlds)]
     for _ in range(args.epochs):
         order = torch.randperm(len(windows), generator=generator).tolist()
-        total, batches = 0.0, 0
+        total, readout_total, batches = 0.0, 0.0, 0
         for first in range(0, len(order), args.batch):
             chosen = [windows[i] for i in order[first:first + args.batch]]
             pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
                 [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
             features, targets, starts = pick("features"), pick("targets"), pick("starts")
             weights = loss_weights(pick("relieved"), args.stall_weight)
+            stall_rule = pick("stall_rule") if student.stall_readout is not None else None
             memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
-            loss = 0.0
+            loss, readout_error = 0.0, 0.0
             for j in range(args.sequence):
                 if j > 0:
                     memory = torch.where(starts[j][:, None], initial, memory)
                 memory = student.remember(features[j], memory)
                 loss = loss + imitation_loss(student.mean(features[j], memory), targets[j],
                                              weights[j])
-            loss = loss / args.sequence
+                if stall_rule is not None:
+                    error = student.stall_readout(memory) - stall_rule[j]
+                    readout_error = readout_error + (error * error).mean()
+            loss, readout_error = loss / args.sequence, readout_error / args.sequence
             optimiser.zero_grad()
-            loss.backward()
+            (loss + args.stall_memory * readout_error).backward()
             torch.nn.utils.clip_grad_norm_(student.parameters(), args.max_grad_norm)
             optimiser.step()
             total, batches = total + loss.item(), batches + 1
-    return total / max(batches, 1)
+            readout_total += float(readout_error)
+    return total / max(batches, 1), readout_total / max(batches, 1)
 
 
 def write_student(init, student, rollout, path):
@@ -352,6 +376,8 @@ def parse(argv):
     parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
     parser.add_argument("--stall-weight", type=float, default=1.0,
                         help="loss weight of the steps a relief steers the teacher")
+    parser.add_argument("--stall-memory", type=float, default=0.0,
+                        help="loss weight of the memory's reading of the teacher's stall rule")
     parser.add_argument("--seed", type=int, default=0, help="worlds' episodes, sequence order")
     parser.add_argument("--threads", type=int, default=2, help="PyTorch and simulator threads")
     parser.add_argument("--resume", action="store_true",
@@ -372,6 +398,8 @@ def parse(argv):
         value = getattr(args, name)
         if not 0 < value < 1e3:
             raise BadInput(f"--{name.replace('_', '-')} {value}: expected a positive value")
+    if not 0 <= args.stall_memory < 1e3:
+        raise BadInput(f"--stall-memory {args.stall_memory}: expected 0 or a positive value")
     if not os.path.isdir(os.path.dirname(os.path.abspath(args.out))):
         raise BadInput(f"--out {args.out}: no such folder")
     return args
@@ -389,14 +417,16 @@ def load(args):
     if init.recurrent_size <= 0:
         raise BadInput(f"{args.init}: not a recurrent policy (train_ppo with "
                        "policy.recurrent_size > 0)")
-    if args.stall_weight != 1.0 and not teacher.has_stall_rule:
-        raise BadInput(f"--stall-weight {args.stall_weight}: {args.teacher} has no stall rule "
-                       "(ensemble_policy --stall-pace)")
+    for name, used in (("stall_weight", args.stall_weight != 1.0),
+                       ("stall_memory", args.stall_memory > 0)):
+        if used and not teacher.has_stall_rule:
+            raise BadInput(f"--{name.replace('_', '-')} {getattr(args, name)}: {args.teacher} "
+                           "has no stall rule (ensemble_policy --stall-pace)")
     if init.observation_settings != teacher.observation_settings:
         raise BadInput(f"{args.init}: observation settings {init.observation_settings} differ "
                        f"from the teacher's {teacher.observation_settings}")
     try:
-        student = Student(dict(init.module.named_parameters()))
+        student = Student(dict(init.module.named_parameters()), args.stall_memory > 0)
     except BadInput as error:
         raise BadInput(f"{args.init}: {error}")
     return teacher, init.module, student
@@ -429,7 +459,7 @@ def main(argv):
         rollout, episodes = play(worlds, teacher, init, student, initial, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
-        loss = train(student, optimiser, rollouts, initial, args, generator)
+        loss, readout_error = train(student, optimiser, rollouts, initial, args, generator)
         write_student(init, student, rollouts[-1], args.out)
         save_state(args, iteration, student, optimiser, generator, rollouts)
         playing, training = playing + played - started, training + time.monotonic() - played
@@ -441,10 +471,11 @@ def main(argv):
         relieved = (f", a relief steering the teacher in "
                     f"{100 * rollout.relieved.float().mean():.1f} % of steps"
                     if teacher.has_stall_rule else "")
+        readout = f", stall readout error {readout_error:.4f}" if args.stall_memory else ""
         print(f"iteration {iteration + 1}/{args.iterations}: "
               f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}"
-              f"{relieved}, loss {loss:.4f}, elapsed {elapsed:.0f} s, ETA {left:.0f} s",
-              flush=True)
+              f"{relieved}, loss {loss:.4f}{readout}, elapsed {elapsed:.0f} s, "
+              f"ETA {left:.0f} s", flush=True)
     if os.path.exists(state_path(args)):
         os.remove(state_path(args))
     print(f"wrote {args.out}")

@@ -1,7 +1,8 @@
 """scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
 its trap worlds replay scenarios INIT times out in; the steps a teacher's relief steers weigh
---stall-weight; bad input is refused."""
+--stall-weight, and --stall-memory teaches the memory the teacher's stall rule; bad input is
+refused."""
 
 import importlib.util
 import subprocess
@@ -159,7 +160,8 @@ def test_the_loss_weighs_each_row():
     assert loss(mean, target, torch.tensor([1.0, 3.0])).item() == 0.25  # (0.25 + 0.75) / 4
 
 
-def test_the_steps_a_relief_steers_weigh_the_stall_weight(recurrent_policy, stalling_teacher):
+def test_a_rollout_records_the_teachers_stall_rule_and_weighs_its_reliefs(recurrent_policy,
+                                                                          stalling_teacher):
     distill = script_module()
     args = distill.parse([str(stalling_teacher), str(recurrent_policy), "--out", "s.pt",
                           "--worlds", "3", "--steps", "40", "--threads", "1",
@@ -168,14 +170,16 @@ def test_the_steps_a_relief_steers_weigh_the_stall_weight(recurrent_policy, stal
     settings = teacher.observation_settings
     rollout, _ = distill.play(distill.Worlds(args, settings, []), teacher, init, student,
                               init.initial_state(1), args, 0)
-    # The same steps again, the teacher's stall count read at each.
+    # The same steps again, the teacher's stall rule read at each.
     replayed, worlds = colav.Policy(str(stalling_teacher)), distill.Worlds(args, settings, [])
-    obs, starts, stalled = worlds.reset(seed=args.seed), np.ones(3, dtype=bool), []
+    obs, starts, rule = worlds.reset(seed=args.seed), np.ones(3, dtype=bool), []
     for _ in range(args.steps):
         actions = replayed.act(obs, starts)
-        stalled.append(replayed.stalls >= 1)
+        rule.append(np.stack([replayed.pace, replayed.stalls], 1))
         obs, starts, _ = worlds.step(actions)
-    stalled = torch.from_numpy(np.array(stalled))
+    rule = torch.from_numpy(np.array(rule))
+    assert torch.equal(rollout.stall_rule, rule)
+    stalled = rule[:, :, 1] >= 1
     assert stalled.any() and not stalled.all()
     assert torch.equal(rollout.relieved, stalled)
     torch.testing.assert_close(distill.loss_weights(rollout.relieved, args.stall_weight),
@@ -190,6 +194,25 @@ def test_a_run_with_a_stall_weight_reports_the_relieved_steps(recurrent_policy,
     shares = [float(line.split("steering the teacher in ")[1].split(" %")[0])
               for line in result.stdout.splitlines() if line.startswith("iteration")]
     assert len(shares) == 3 and all(0 < share < 100 for share in shares), result.stdout
+
+
+def test_the_stall_readout_trains_the_memory_and_is_not_written(recurrent_policy,
+                                                                stalling_teacher, tmp_path):
+    # No gradient clipping, which would tie every parameter's step to the readout's gradient.
+    unclipped = [*SMALL, "--max-grad-norm", 100]
+    plain = run(stalling_teacher, recurrent_policy, "--out", tmp_path / "plain.pt", *unclipped)
+    read = run(stalling_teacher, recurrent_policy, "--out", tmp_path / "read.pt",
+               "--stall-memory", 1, *unclipped)
+    assert plain.returncode == 0 and read.returncode == 0, plain.stderr + read.stderr
+    errors = [float(line.split("stall readout error ")[1].split(",")[0])
+              for line in read.stdout.splitlines() if line.startswith("iteration")]
+    assert len(errors) == 3 and errors[-1] < errors[0], read.stdout
+    plain_parameters = dict(torch.jit.load(str(tmp_path / "plain.pt")).named_parameters())
+    read_parameters = dict(torch.jit.load(str(tmp_path / "read.pt")).named_parameters())
+    assert read_parameters.keys() == plain_parameters.keys()  # INIT's, no readout
+    # The readout's error reaches the memory's weights, not the readout alone.
+    assert not torch.equal(read_parameters["recurrent_weight_hh"],
+                           plain_parameters["recurrent_weight_hh"])
 
 
 def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
@@ -250,6 +273,10 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--stall-weight", 2))
     assert "--stall-weight 0.0: expected a positive value" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--stall-weight", 0))
+    assert "--stall-memory 1.0: " + str(held_policy) + " has no stall rule" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--stall-memory", 1))
+    assert "--stall-memory -1.0: expected 0 or a positive value" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--stall-memory", -1))
     assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
     assert "--resume: " + str(out) + ".state" in refusal(
