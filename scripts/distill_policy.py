@@ -129,16 +129,15 @@ def imitation_loss(mean, target, weights):
 
 
 class Rollout:
-    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], whether a relief
-    steered the teacher [T, N] and its stall rule's (pace, stalls) [T, N, 2] (zeros without
-    one), episode starts [T, N] and the student's memory before each step [T, N, H]; the last
-    step's observations [N, O] check the written file."""
+    """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], the teacher's
+    stall rule (STALL_RULE) [T, N, 2] (zeros without one), episode starts [T, N] and the
+    student's memory before each step [T, N, H]; the last step's observations [N, O] check the
+    written file."""
 
     def __init__(self, steps, worlds, feature_size, memory_size):
         self.last_observations = None
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
-        self.relieved = torch.empty(steps, worlds, dtype=torch.bool)
         self.stall_rule = torch.empty(steps, worlds, len(STALL_RULE))
         self.starts = torch.empty(steps, worlds, dtype=torch.bool)
         self.memory = torch.empty(steps, worlds, memory_size)
@@ -231,7 +230,6 @@ def play(worlds, teacher, init, student, initial, args, iteration):
         if teacher.has_stall_rule:
             stall_rule = torch.from_numpy(np.stack([getattr(teacher, name)
                                                     for name in STALL_RULE], 1))
-        relieved = stall_rule[:, STALL_RULE.index("stalls")] >= 1
         start = torch.from_numpy(starts)
         memory = torch.where(start[:, None], initial, memory)
         with torch.no_grad():
@@ -239,7 +237,7 @@ def play(worlds, teacher, init, student, initial, args, iteration):
             if rollout is None:
                 rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
             rollout.features[t], rollout.targets[t] = features, target
-            rollout.relieved[t], rollout.stall_rule[t] = relieved, stall_rule
+            rollout.stall_rule[t] = stall_rule
             rollout.starts[t], rollout.memory[t] = start, memory
             rollout.last_observations = observation
             action, memory = student.act(features, memory)
@@ -249,9 +247,14 @@ def play(worlds, teacher, init, student, initial, args, iteration):
     return rollout, episodes
 
 
-def loss_weights(relieved, stall_weight):
+def relieved(stall_rule):
+    """Where a relief steered the teacher (it had stalled), from its recorded stall rule."""
+    return stall_rule[..., STALL_RULE.index("stalls")] >= 1
+
+
+def loss_weights(stall_rule, stall_weight):
     """Each step's weight in the loss: stall_weight where a relief steered the teacher, else 1."""
-    return torch.where(relieved, stall_weight, 1.0)
+    return torch.where(relieved(stall_rule), stall_weight, 1.0)
 
 
 def train(student, optimiser, rollouts, initial, args, generator):
@@ -269,8 +272,8 @@ def train(student, optimiser, rollouts, initial, args, generator):
             pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
                 [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
             features, targets, starts = pick("features"), pick("targets"), pick("starts")
-            weights = loss_weights(pick("relieved"), args.stall_weight)
-            stall_rule = pick("stall_rule") if student.stall_readout is not None else None
+            stall_rule = pick("stall_rule")
+            weights = loss_weights(stall_rule, args.stall_weight)
             memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
             loss, readout_error = 0.0, 0.0
             for j in range(args.sequence):
@@ -279,7 +282,7 @@ def train(student, optimiser, rollouts, initial, args, generator):
                 memory = student.remember(features[j], memory)
                 loss = loss + imitation_loss(student.mean(features[j], memory), targets[j],
                                              weights[j])
-                if stall_rule is not None:
+                if student.stall_readout is not None:
                     error = student.stall_readout(memory) - stall_rule[j]
                     readout_error = readout_error + (error * error).mean()
             loss, readout_error = loss / args.sequence, readout_error / args.sequence
@@ -468,13 +471,13 @@ def main(argv):
         left = (playing / (iteration + 1 - done) * (args.iterations - iteration - 1)
                 + training / sum(kept[done:iteration + 1]) * sum(kept[iteration + 1:]))
         elapsed = time.monotonic() - began
-        relieved = (f", a relief steering the teacher in "
-                    f"{100 * rollout.relieved.float().mean():.1f} % of steps"
-                    if teacher.has_stall_rule else "")
+        reliefs = (f", a relief steering the teacher in "
+                   f"{100 * relieved(rollout.stall_rule).float().mean():.1f} % of steps"
+                   if teacher.has_stall_rule else "")
         readout = f", stall readout error {readout_error:.4f}" if args.stall_memory else ""
         print(f"iteration {iteration + 1}/{args.iterations}: "
               f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}"
-              f"{relieved}, loss {loss:.4f}{readout}, elapsed {elapsed:.0f} s, "
+              f"{reliefs}, loss {loss:.4f}{readout}, elapsed {elapsed:.0f} s, "
               f"ETA {left:.0f} s", flush=True)
     if os.path.exists(state_path(args)):
         os.remove(state_path(args))

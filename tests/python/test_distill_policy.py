@@ -181,8 +181,8 @@ def test_a_rollout_records_the_teachers_stall_rule_and_weighs_its_reliefs(recurr
     assert torch.equal(rollout.stall_rule, rule)
     stalled = rule[:, :, 1] >= 1
     assert stalled.any() and not stalled.all()
-    assert torch.equal(rollout.relieved, stalled)
-    torch.testing.assert_close(distill.loss_weights(rollout.relieved, args.stall_weight),
+    assert torch.equal(distill.relieved(rollout.stall_rule), stalled)
+    torch.testing.assert_close(distill.loss_weights(rollout.stall_rule, args.stall_weight),
                                torch.where(stalled, 4.0, 1.0))
 
 
