@@ -10,7 +10,7 @@ against path-following the way the configurations do?
 
 Reads STUDY_DIR/eval/study/episodes.csv (the study's own scenarios) and STUDY_DIR/summary.json
 (each configuration's training steps). A folder that holds episodes.csv itself instead (an
-`evaluate --out` folder: agents made outside a study, the distilled students say) is read as a
+`evaluate --out` folder: agents made outside a study, such as distilled students) is read as a
 study whose training steps are not recorded (its rows' "steps" stay empty). Every study must
 have played the same scenarios (the same names and episode seeds). An agent of the same name in
 several studies (a run reused by copying) counts once if its episodes are identical; otherwise
