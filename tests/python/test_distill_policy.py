@@ -186,14 +186,18 @@ def test_a_rollout_records_the_teachers_stall_rule_and_weighs_its_reliefs(recurr
                                torch.where(stalled, 4.0, 1.0))
 
 
-def test_a_run_with_a_stall_weight_reports_the_relieved_steps(recurrent_policy,
-                                                              stalling_teacher, tmp_path):
+def test_a_run_with_a_stall_weight_reports_the_relieved_steps_and_trains_on_them(
+        recurrent_policy, stalling_teacher, tmp_path):
     result = run(stalling_teacher, recurrent_policy, "--out", tmp_path / "s.pt",
                  "--stall-weight", 3, *SMALL)
     assert result.returncode == 0, result.stderr
     shares = [float(line.split("steering the teacher in ")[1].split(" %")[0])
               for line in result.stdout.splitlines() if line.startswith("iteration")]
     assert len(shares) == 3 and all(0 < share < 100 for share in shares), result.stdout
+    plain = run(stalling_teacher, recurrent_policy, "--out", tmp_path / "plain.pt", *SMALL)
+    assert plain.returncode == 0, plain.stderr
+    assert not torch.equal(actions(tmp_path / "s.pt", observations()),
+                           actions(tmp_path / "plain.pt", observations()))
 
 
 def test_the_stall_readout_trains_the_memory_and_is_not_written(recurrent_policy,
