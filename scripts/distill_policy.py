@@ -121,7 +121,7 @@ class Student(torch.nn.Module):
 
 def imitation_loss(mean, target, weights):
     """Squared error of the action mean, none past a bound the teacher's action sits on, each
-    row's weighed by `weights` [B] (weights of 1 give the plain mean to the bit)."""
+    row weighed by `weights` [B] (weights of 1 give the plain mean to the bit)."""
     error = mean - target
     error = torch.where(target >= 1.0, torch.clamp(error, max=0.0), error)
     error = torch.where(target <= -1.0, torch.clamp(error, min=0.0), error)

@@ -92,6 +92,7 @@ class Policy:
         return self._stall_column(-2)
 
     def _stall_column(self, column):
+        """A copy of the states' `column` for an ensemble with a stall rule, else None."""
         if not self.has_stall_rule or self._states is None:
             return None
         return self._states[:, column].numpy().copy()
