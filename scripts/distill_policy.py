@@ -28,7 +28,9 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
    the memory is taught to keep what tells a second stall from a first.
 3. The student is written after every iteration (a temporary file, then renamed), checked
    against the file's own `step`, with INIT's interface, recorded observation settings and
-   value layers (which do not act, and are not trained).
+   value layers (which do not act, and are not trained). So is STUDENT.pt.json: the run's
+   settings and each iteration's episodes, loss and seconds, with "finished": true once the
+   last iteration is written (the study runner's mark of a finished job).
 
     PYTHONPATH=build/python /usr/bin/python3 scripts/distill_policy.py TEACHER.pt INIT.pt \\
         --out STUDENT.pt [--iterations 8] [--seed 0] [...]
@@ -38,10 +40,13 @@ the same seed and thread count give the same file. After every iteration the run
 student, Adam's moments, the kept rollouts, the sequence order's generator) is written to
 STUDENT.pt.state (a temporary file, then renamed; removed at the end): the same command with
 --resume carries on after the last iteration written and ends with the uninterrupted run's
-file, byte for byte. Bad input: one line naming the argument or file, exit status 2.
+file, byte for byte. --out's folder is made if missing. --print-config checks the arguments
+(not the files), prints the run's settings and exits. Bad input: one line naming the argument
+or file, exit status 2.
 """
 
 import argparse
+import json
 import os
 import sys
 import time
@@ -59,11 +64,18 @@ TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episode
 TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
 STALL_RULE = ("pace", "stalls")  # the teacher's stall-rule readings (colav.Policy) recorded
 STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator",
-              "rollouts"}  # what save_state writes
+              "rollouts", "log"}  # what save_state writes
 
 
 class BadInput(Exception):
     pass
+
+
+class ArgumentParser(argparse.ArgumentParser):
+    """argparse's, its errors one line (BadInput) instead of the usage and a line."""
+
+    def error(self, message):
+        raise BadInput(message)
 
 
 class Student(torch.nn.Module):
@@ -313,13 +325,37 @@ def write_student(init, student, rollout, path):
     os.replace(temporary, path)
 
 
-def describe(episodes):
-    """The episodes that ended in a rollout, in a few words."""
+def episode_means(episodes):
+    """The episodes that ended in a rollout: their count and means (% and m), as the summary
+    file records them."""
     if not episodes:
+        return {"episodes": 0}
+    progress, cte, collided, late = (float(np.mean(column)) for column in zip(*episodes))
+    return {"episodes": len(episodes), "progress": 100 * progress, "cte_m": cte,
+            "collisions": 100 * collided, "time_outs": 100 * late}
+
+
+def describe(means):
+    """episode_means in a few words."""
+    if not means["episodes"]:
         return "no episode to its end"
-    progress, cte, collided, late = (np.mean(column) for column in zip(*episodes))
-    return (f"{len(episodes)} episodes (progress {100 * progress:.1f} %, cte {cte:.1f} m, "
-            f"collisions {100 * collided:.1f} %, time-outs {100 * late:.1f} %)")
+    return (f"{means['episodes']} episodes (progress {means['progress']:.1f} %, "
+            f"cte {means['cte_m']:.1f} m, collisions {means['collisions']:.1f} %, "
+            f"time-outs {means['time_outs']:.1f} %)")
+
+
+def summary_path(args):
+    return f"{args.out}.json"
+
+
+def write_summary(args, log, finished):
+    """STUDENT.pt.json: the settings and the iterations so far, a temporary file then renamed."""
+    path = summary_path(args)
+    with open(f"{path}.tmp", "w") as out:
+        json.dump({"finished": finished, "settings": run_settings(args), "iterations": log,
+                   "seconds": sum(entry["seconds"] for entry in log)}, out, indent=2)
+        out.write("\n")
+    os.replace(f"{path}.tmp", path)
 
 
 def state_path(args):
@@ -328,21 +364,22 @@ def state_path(args):
 
 def run_settings(args):
     """What a resumed run must share with the one that wrote the state."""
-    return {name: value for name, value in vars(args).items() if name != "resume"}
+    return {name: value for name, value in vars(args).items()
+            if name not in ("resume", "print_config")}
 
 
-def save_state(args, iteration, student, optimiser, generator, rollouts):
+def save_state(args, iteration, student, optimiser, generator, rollouts, log):
     """The run after `iteration` (0 first), to a temporary file, then renamed."""
     path = state_path(args)
     torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,
                 "student": student.state_dict(), "optimiser": optimiser.state_dict(),
-                "generator": generator.get_state(), "rollouts": [vars(r) for r in rollouts]},
-               f"{path}.tmp")
+                "generator": generator.get_state(), "rollouts": [vars(r) for r in rollouts],
+                "log": log}, f"{path}.tmp")
     os.replace(f"{path}.tmp", path)
 
 
 def load_state(args, student, optimiser, generator):
-    """(iterations done, kept rollouts) of the state --resume carries on from."""
+    """(iterations done, kept rollouts, iteration log) of the state --resume carries on from."""
     path = state_path(args)
     try:
         state = torch.load(path)
@@ -358,11 +395,13 @@ def load_state(args, student, optimiser, generator):
     student.load_state_dict(state["student"])
     optimiser.load_state_dict(state["optimiser"])
     generator.set_state(state["generator"])
-    return state["iterations_done"], [Rollout.restored(fields) for fields in state["rollouts"]]
+    return (state["iterations_done"], [Rollout.restored(fields) for fields in state["rollouts"]],
+            state["log"])
 
 
 def parse(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    # No abbreviations: a misspelt option (a study file's, say) is refused, not taken for another.
+    parser = ArgumentParser(description=__doc__.split("\n")[0], allow_abbrev=False)
     parser.add_argument("teacher", metavar="TEACHER.pt", help="the policy to imitate")
     parser.add_argument("init", metavar="INIT.pt", help="recurrent train_ppo policy to start from")
     parser.add_argument("--out", required=True, metavar="STUDENT.pt", help="the student's file")
@@ -385,6 +424,8 @@ def parse(argv):
     parser.add_argument("--threads", type=int, default=2, help="PyTorch and simulator threads")
     parser.add_argument("--resume", action="store_true",
                         help="carry on from STUDENT.pt.state, written by the same command")
+    parser.add_argument("--print-config", action="store_true",
+                        help="check the arguments (not the files), print the settings, exit")
     args = parser.parse_args(argv)
     bounds = {"iterations": (1, 1000), "steps": (2, 100000), "worlds": (1, 1024),
               "keep": (1, 1000), "epochs": (1, 100), "sequence": (2, 1000),
@@ -403,9 +444,17 @@ def parse(argv):
             raise BadInput(f"--{name.replace('_', '-')} {value}: expected a positive value")
     if not 0 <= args.stall_memory < 1e3:
         raise BadInput(f"--stall-memory {args.stall_memory}: expected 0 or a positive value")
-    if not os.path.isdir(os.path.dirname(os.path.abspath(args.out))):
-        raise BadInput(f"--out {args.out}: no such folder")
+    if os.path.isdir(args.out):
+        raise BadInput(f"--out {args.out}: a folder, not a file name")
     return args
+
+
+def make_out_folder(args):
+    folder = os.path.dirname(os.path.abspath(args.out))
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except OSError as error:
+        raise BadInput(f"--out {args.out}: cannot make its folder ({error.strerror})")
 
 
 def load(args):
@@ -438,11 +487,17 @@ def load(args):
 def main(argv):
     try:
         args = parse(argv)
+        if args.print_config:  # as STUDENT.pt.json records them (JSON is YAML)
+            print("settings:")
+            for name, value in run_settings(args).items():
+                print(f"  {name}: {json.dumps(value)}")
+            return 0
         teacher, init, student = load(args)
         generator = torch.Generator().manual_seed(args.seed)
         optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
-        done, rollouts = (load_state(args, student, optimiser, generator) if args.resume
-                          else (0, []))
+        done, rollouts, log = (load_state(args, student, optimiser, generator) if args.resume
+                               else (0, [], []))
+        make_out_folder(args)
     except BadInput as error:
         print(f"distill_policy: error: {error}", file=sys.stderr)
         return 2
@@ -463,22 +518,30 @@ def main(argv):
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
         loss, readout_error = train(student, optimiser, rollouts, initial, args, generator)
+        means = episode_means(episodes)
+        relieved_share = (100 * float(relieved(rollout.stall_rule).float().mean())
+                          if teacher.has_stall_rule else None)
+        log.append({"iteration": iteration + 1, "driver": "teacher" if iteration == 0
+                    else "student", **means, "relieved_steps": relieved_share, "loss": loss,
+                    "stall_readout_error": readout_error if args.stall_memory else None,
+                    "seconds": time.monotonic() - started})
         write_student(init, student, rollouts[-1], args.out)
-        save_state(args, iteration, student, optimiser, generator, rollouts)
+        save_state(args, iteration, student, optimiser, generator, rollouts, log)
+        write_summary(args, log, finished=False)
         playing, training = playing + played - started, training + time.monotonic() - played
         # Training time grows with the rollouts kept: ETA from the seconds per play and per
         # rollout trained on.
         left = (playing / (iteration + 1 - done) * (args.iterations - iteration - 1)
                 + training / sum(kept[done:iteration + 1]) * sum(kept[iteration + 1:]))
         elapsed = time.monotonic() - began
-        reliefs = (f", a relief steering the teacher in "
-                   f"{100 * relieved(rollout.stall_rule).float().mean():.1f} % of steps"
+        reliefs = (f", a relief steering the teacher in {relieved_share:.1f} % of steps"
                    if teacher.has_stall_rule else "")
         readout = f", stall readout error {readout_error:.4f}" if args.stall_memory else ""
         print(f"iteration {iteration + 1}/{args.iterations}: "
-              f"{'teacher' if iteration == 0 else 'student'} drove {describe(episodes)}"
+              f"{log[-1]['driver']} drove {describe(means)}"
               f"{reliefs}, loss {loss:.4f}{readout}, elapsed {elapsed:.0f} s, "
               f"ETA {left:.0f} s", flush=True)
+    write_summary(args, log, finished=True)
     if os.path.exists(state_path(args)):
         os.remove(state_path(args))
     print(f"wrote {args.out}")

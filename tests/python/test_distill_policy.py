@@ -1,10 +1,12 @@
 """scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
 its trap worlds replay scenarios INIT times out in; the steps a teacher's relief steers weigh
---stall-weight, and --stall-memory teaches the memory the teacher's stall rule; bad input is
+--stall-weight, and --stall-memory teaches the memory the teacher's stall rule; STUDENT.pt.json
+records each iteration and the end; --print-config checks the arguments alone; bad input is
 refused."""
 
 import importlib.util
+import json
 import subprocess
 import sys
 
@@ -241,6 +243,7 @@ def test_an_interrupted_run_resumes_to_the_same_file(recurrent_policy, held_poli
             break
     process.wait()
     assert (tmp_path / "cut.pt.state").exists()
+    assert json.loads((tmp_path / "cut.pt.json").read_text())["finished"] is False
     other = subprocess.run(command + ["--resume", "--seed", "1"], capture_output=True, text=True)
     assert "cut.pt.state was written with --seed 0, not 1" in refusal(other)
     resumed = subprocess.run(command + ["--resume"], capture_output=True, text=True)
@@ -250,6 +253,9 @@ def test_an_interrupted_run_resumes_to_the_same_file(recurrent_policy, held_poli
                 if line.startswith("iteration")]
     assert reported == ["iteration 3/3"], resumed.stdout
     assert not (tmp_path / "cut.pt.state").exists()
+    summary = json.loads((tmp_path / "cut.pt.json").read_text())
+    assert summary["finished"] is True
+    assert [i["iteration"] for i in summary["iterations"]] == [1, 2, 3]
     whole_parameters = dict(torch.jit.load(str(tmp_path / "whole.pt")).named_parameters())
     for name, value in torch.jit.load(str(tmp_path / "cut.pt")).named_parameters():
         assert torch.equal(value, whole_parameters[name]), name
@@ -285,6 +291,49 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
     assert "--resume: " + str(out) + ".state" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--resume"))
-    assert "no such folder" in refusal(run(held_policy, recurrent_policy, "--out",
-                                           tmp_path / "nowhere" / "s.pt"))
+    (tmp_path / "a_file").write_text("")
+    assert "--out " + str(tmp_path / "a_file" / "s.pt") + ": cannot make its folder" in refusal(
+        run(held_policy, recurrent_policy, "--out", tmp_path / "a_file" / "s.pt"))
+    assert "--out " + str(tmp_path) + ": a folder, not a file name" in refusal(
+        run(held_policy, recurrent_policy, "--out", tmp_path))
+    assert "unrecognized arguments: --iteration" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--iteration", 2, "--print-config"))
     assert not out.exists()
+
+
+def test_print_config_checks_the_arguments_only_and_makes_nothing(tmp_path):
+    # The study runner checks a student's job this way before its teacher exists.
+    out = tmp_path / "students" / "s.pt"
+    result = run(tmp_path / "teacher.pt", tmp_path / "init.pt", "--out", out, "--traps", 2,
+                 "--print-config")
+    assert result.returncode == 0, result.stderr
+    assert result.stdout.startswith("settings:\n"), result.stdout
+    assert "\n  traps: 2\n" in result.stdout and f'\n  out: "{out}"\n' in result.stdout
+    names = [line.split(":")[0].strip() for line in result.stdout.splitlines()[1:]]
+    assert "traps" in names and "resume" not in names and "print_config" not in names, names
+    assert not (tmp_path / "students").exists()
+    assert "--traps 9: expected 0 to --worlds - 1 (3)" in refusal(
+        run(tmp_path / "teacher.pt", tmp_path / "init.pt", "--out", out, "--worlds", 4,
+            "--traps", 9, "--print-config"))
+
+
+def test_the_summary_records_each_iteration_and_the_end(recurrent_policy, held_policy,
+                                                        tmp_path):
+    out = tmp_path / "made" / "here" / "s.pt"
+    result = run(held_policy, recurrent_policy, "--out", out, *SMALL)
+    assert result.returncode == 0, result.stderr
+    summary = json.loads(out.with_name("s.pt.json").read_text())
+    assert summary["finished"] is True
+    assert summary["settings"]["iterations"] == 3 and summary["settings"]["out"] == str(out)
+    iterations = summary["iterations"]
+    assert [i["iteration"] for i in iterations] == [1, 2, 3]
+    assert [i["driver"] for i in iterations] == ["teacher", "student", "student"]
+    assert [i["loss"] for i in iterations] == pytest.approx(losses(result.stdout), abs=5e-5)
+    assert all(i["relieved_steps"] is None and i["seconds"] > 0 for i in iterations)
+    assert summary["seconds"] == pytest.approx(sum(i["seconds"] for i in iterations))
+    # --print-config prints the settings the summary records (the study compares the two).
+    printed = run(held_policy, recurrent_policy, "--out", out, *SMALL, "--print-config")
+    lines = printed.stdout.splitlines()
+    assert lines[0] == "settings:", printed.stdout
+    assert {name.strip(): json.loads(value) for name, value in
+            (line.split(": ", 1) for line in lines[1:])} == summary["settings"]
