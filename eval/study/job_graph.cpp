@@ -17,6 +17,10 @@ constexpr double kDatasetSeconds = 2.0;
 constexpr double kFigureSeconds = 2.0;
 constexpr double kVaeFiguresSeconds = 150.0;
 constexpr double kEnsembleSeconds = 2.0;
+constexpr double kStudentSeconds = 600.0;  // distill_policy's defaults, two at a time
+// distill_policy's threads unless a student's options say otherwise: the same file whatever the
+// machine (its results depend on the thread count), and two students keep two cores busy.
+constexpr int kStudentThreads = 1;
 
 // The policy file of training seed `seed` of `config`.
 std::filesystem::path RunPolicy(const std::filesystem::path& out, const std::string& config,
@@ -28,6 +32,19 @@ std::filesystem::path RunPolicy(const std::filesystem::path& out, const std::str
 std::filesystem::path EnsemblePolicyFile(const std::filesystem::path& out,
                                          const std::string& ensemble, int k) {
   return out / "ensembles" / ensemble / ("seed_" + std::to_string(k)) / "policy.pt";
+}
+
+// The policy file of student `k` of the kind `student`.
+std::filesystem::path StudentPolicyFile(const std::filesystem::path& out,
+                                        const std::string& student, int k) {
+  return out / StudentFolder(student, k) / "policy.pt";
+}
+
+// The policy file of seed `k` of the ensemble kind or configuration `teacher`.
+std::filesystem::path TeacherPolicyFile(const StudySpec& spec, const std::filesystem::path& out,
+                                        const std::string& teacher, int k) {
+  return spec.FindEnsemble(teacher) ? EnsemblePolicyFile(out, teacher, k)
+                                    : RunPolicy(out, teacher, k);
 }
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
@@ -52,6 +69,12 @@ EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::p
     for (int k = 0; k < ensemble.count; ++k) {
       group.models.push_back(SeedModelName(ensemble.name, k));
       group.policies.push_back(EnsemblePolicyFile(out, ensemble.name, k));
+    }
+  }
+  for (const StudentSpec& student : spec.students) {
+    for (int k = 0; k < student.count; ++k) {
+      group.models.push_back(SeedModelName(student.name, k));
+      group.policies.push_back(StudentPolicyFile(out, student.name, k));
     }
   }
   for (const std::filesystem::path& agent : spec.evaluation.reference_agents) {
@@ -131,6 +154,33 @@ void AddEnsembleJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
   }
 }
 
+// One distill_policy job per student, after its teacher and the run it starts from
+// (study_spec.h, StudentSpec). Finished when its summary says so (STUDENT.pt.json, which also
+// records its settings); continued from its state (STUDENT.pt.state) when stopped.
+void AddStudentJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
+                    const std::filesystem::path& out,
+                    std::map<std::string, std::size_t>& policy_jobs) {
+  for (const StudentSpec& student : spec.students) {
+    for (int k = 0; k < student.count; ++k) {
+      const std::filesystem::path policy = StudentPolicyFile(out, student.name, k);
+      const std::filesystem::path teacher = TeacherPolicyFile(spec, out, student.teacher, k);
+      const std::filesystem::path start = RunPolicy(out, student.start, spec.StartSeed(student, k));
+      StudyJob job = NewJob(StudentFolder(student.name, k).string(), "distill_policy",
+                            {teacher.string(), start.string(), "--out", policy.string(), "--seed",
+                             std::to_string(k), "--threads", std::to_string(kStudentThreads)},
+                            policy.string() + ".json", kStudentSeconds);
+      job.args.insert(job.args.end(), student.options.begin(), student.options.end());
+      job.resume_args = job.args;
+      job.resume_args.emplace_back("--resume");
+      job.resume_marker = policy.string() + ".state";
+      job.recorded_settings = job.complete_marker;
+      job.check_configuration = k == 0;
+      job.dependencies = {policy_jobs.at(teacher.string()), policy_jobs.at(start.string())};
+      policy_jobs[policy.string()] = AddJob(jobs, job);
+    }
+  }
+}
+
 }  // namespace
 
 std::string JobFileStem(const std::string& id) {
@@ -147,6 +197,10 @@ std::filesystem::path TrainingFigurePath(const std::string& config) {
 
 std::filesystem::path RunFolder(const std::string& config, int seed) {
   return std::filesystem::path("ppo") / config / ("seed_" + std::to_string(seed));
+}
+
+std::filesystem::path StudentFolder(const std::string& student, int k) {
+  return std::filesystem::path("students") / student / ("seed_" + std::to_string(k));
 }
 
 std::string SeedModelName(const std::string& config, int seed) {
@@ -222,6 +276,7 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
 
   AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   AddEnsembleJobs(jobs, spec, out, policy_jobs);
+  AddStudentJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path dir = out / "eval" / group.scenario_set;
     StudyJob job = NewJob(

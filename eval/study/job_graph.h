@@ -1,4 +1,5 @@
-// The jobs of a study and their order: dataset -> VAEs -> PPO runs -> evaluations. Each job is
+// The jobs of a study and their order: dataset -> VAEs -> PPO runs -> ensembles -> students ->
+// evaluations. Each job is
 // one run of a project program into its own output folder under the study folder
 // (interfaces.md, section "study"); a job is complete when its program's last output exists, and
 // resumable when its program left a checkpoint.
@@ -29,6 +30,9 @@ struct StudyJob {
   std::vector<std::string> expected_models;
   /// Checked with --print-config before the study starts (one seed stands for its siblings).
   bool check_configuration = true;
+  /// The settings a finished run recorded, compared with --print-config's (recorded_settings.h);
+  /// empty: config.yaml beside the complete marker.
+  std::filesystem::path recorded_settings{};
 };
 
 /// Models evaluated together, paired, on one scenario set (one evaluate run).
@@ -54,6 +58,10 @@ std::filesystem::path TrainingFigurePath(const std::string& config);
 
 /// "ppo/<config>/seed_<k>": a PPO run's folder under the study folder, and its job's id.
 std::filesystem::path RunFolder(const std::string& config, int seed);
+
+/// "students/<student>/seed_<k>": a student's folder under the study folder (its policy.pt, and
+/// distill_policy's policy.pt.json), and its job's id.
+std::filesystem::path StudentFolder(const std::string& student, int k);
 
 /// "<config>.seed_<k>": the model name of a PPO run in evaluations.
 std::string SeedModelName(const std::string& config, int seed);

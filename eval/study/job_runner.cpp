@@ -408,7 +408,9 @@ std::map<std::string, std::string> CheckJobConfigurations(
   std::map<std::string, std::string> configurations;
   for (const StudyJob& job : jobs) {
     if (!job.check_configuration) continue;
-    const std::filesystem::path recorded = job.complete_marker.parent_path() / "config.yaml";
+    const std::filesystem::path recorded = job.recorded_settings.empty()
+                                               ? job.complete_marker.parent_path() / "config.yaml"
+                                               : job.recorded_settings;
     const bool finished = Complete(job);
     if (finished && !std::filesystem::exists(recorded)) continue;
     std::vector<std::string> args = job.args;

@@ -3,6 +3,8 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <cmath>
+#include <fstream>
 #include <initializer_list>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -10,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/job_graph.h"
 #include "eval/study/run_diagnostics.h"
 #include "eval/study/study_figures.h"
 #include "src/atomic_file.h"
@@ -411,6 +414,41 @@ void EnsembleSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// The seconds each student of `student` took to distil (its STUDENT.pt.json), NaN when unread.
+std::vector<double> DistillationSeconds(const StudentSpec& student,
+                                        const std::filesystem::path& out) {
+  std::vector<double> seconds;
+  for (int k = 0; k < student.count; ++k) {
+    std::ifstream in(out / StudentFolder(student.name, k) / "policy.pt.json");
+    const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    seconds.push_back(summary.is_object() ? summary.value("seconds", NAN) : NAN);
+  }
+  return seconds;
+}
+
+// The kinds of student, what each imitates and starts from, into the report's head and
+// summary.json.
+void StudentSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
+                    const std::filesystem::path& out) {
+  if (spec.students.empty()) return;
+  md << "\nStudents, each one recurrent network distilled by DAgger (distill_policy) from the "
+        "teacher's seed k, starting from a run of a recurrent configuration (the one the "
+        "teacher's ensemble k takes, if it is a member; else seed k):\n\n";
+  for (const StudentSpec& student : spec.students) {
+    const std::vector<double> seconds = DistillationSeconds(student, out);
+    md << fmt::format(
+        "- {}: {} of {} starting from {}{}; seconds of each distillation: {:.0f}\n", student.name,
+        student.count, student.teacher, student.start,
+        student.options.empty() ? "" : fmt::format(", with {}", fmt::join(student.options, " ")),
+        fmt::join(seconds, ", "));
+    json["students"][student.name] = {{"teacher", student.teacher},
+                                      {"start", student.start},
+                                      {"options", student.options},
+                                      {"count", student.count},
+                                      {"seconds", seconds}};
+  }
+}
+
 }  // namespace
 
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
@@ -498,6 +536,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
      << (own_steps.empty() ? "" : fmt::format(" ({})", fmt::join(own_steps, ", ")))
      << "; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s) << " s.\n";
   EnsembleSection(md, json, spec);
+  StudentSection(md, json, spec, out);
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport report =
         SummariseScenarioSet(spec, results, spec.evaluation.compare_to);

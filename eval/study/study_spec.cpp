@@ -265,6 +265,93 @@ std::vector<EnsembleSpec> ReadEnsembles(const Reader& reader, const YAML::Node& 
   return ensembles;
 }
 
+// distill_policy's options the study sets itself (StudentSpec).
+const std::set<std::string> kStudyStudentOptions = {"out", "seed", "resume", "print-config"};
+
+// The memory size `config`'s runs are trained with: the last policy.recurrent_size of the
+// study-wide then the configuration's overrides (0, train_ppo's default, when none sets it).
+double RecurrentSize(const StudySpec& spec, const PpoConfigSpec& config) {
+  const std::string key = "policy.recurrent_size=";
+  double size = 0.0;
+  for (const Overrides* overrides : {&spec.ppo_overrides, &config.overrides}) {
+    for (const std::string& assignment : *overrides) {
+      if (assignment.rfind(key, 0) == 0) size = ParseNumber(assignment.substr(key.size()));
+    }
+  }
+  return size;
+}
+
+// distill_policy's options as "--name value" pairs; the script checks the names and values
+// (before the study starts: CheckJobConfigurations, job_runner.h).
+std::vector<std::string> StudentOptions(const Reader& reader, const YAML::Node& node,
+                                        const std::string& key) {
+  std::vector<std::string> options;
+  if (!node) return options;
+  if (!node.IsMap()) reader.Fail(key, "expects a mapping of distill_policy options to values");
+  static const std::regex kOption("[a-z][a-z0-9-]*");
+  for (const auto& item : node) {
+    const std::string name = item.first.as<std::string>();
+    const std::string option_key = fmt::format("{}.{}", key, name);
+    if (!std::regex_match(name, kOption)) {
+      reader.Fail(option_key, "expects an option's name without its dashes, e.g. traps");
+    }
+    if (kStudyStudentOptions.count(name) > 0) reader.Fail(option_key, "is set by the study");
+    options.push_back("--" + name);
+    options.push_back(reader.String(item.second, option_key));
+  }
+  return options;
+}
+
+StudentSpec ReadStudent(const Reader& reader, const YAML::Node& name, const YAML::Node& node,
+                        const StudySpec& spec) {
+  StudentSpec student;
+  const std::string key = "students." + name.as<std::string>();
+  student.name = reader.Name(name, key);
+  const auto config = [&](const std::string& config_name) {
+    return std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                        [&](const PpoConfigSpec& c) { return c.name == config_name; });
+  };
+  if (config(student.name) != spec.ppo_configs.end() || spec.FindEnsemble(student.name)) {
+    reader.Fail(key, "is also the name of a PPO configuration or ensemble");
+  }
+  reader.RequireMap(node, key, {"teacher", "start", "options", "compare_to"});
+  if (!node["teacher"])
+    reader.Fail(key + ".teacher", "missing: the ensemble or configuration imitated");
+  student.teacher = reader.String(node["teacher"], key + ".teacher");
+  if (const EnsembleSpec* ensemble = spec.FindEnsemble(student.teacher)) {
+    student.count = ensemble->count;
+  } else if (config(student.teacher) != spec.ppo_configs.end()) {
+    student.count = spec.ppo_seeds;
+  } else {
+    reader.Fail(key + ".teacher",
+                "'" + student.teacher + "' is not an ensemble or PPO configuration of the study");
+  }
+  if (!node["start"])
+    reader.Fail(key + ".start", "missing: the recurrent configuration it starts as");
+  student.start = reader.String(node["start"], key + ".start");
+  const auto start = config(student.start);
+  if (start == spec.ppo_configs.end()) {
+    reader.Fail(key + ".start", "'" + student.start + "' is not a PPO configuration");
+  }
+  if (!(RecurrentSize(spec, *start) > 0)) {
+    reader.Fail(key + ".start", "'" + student.start +
+                                    "' is not recurrent: give it policy.recurrent_size in its set");
+  }
+  student.options = StudentOptions(reader, node["options"], key + ".options");
+  if (node["compare_to"]) student.compare_to = reader.Name(node["compare_to"], key + ".compare_to");
+  return student;
+}
+
+std::vector<StudentSpec> ReadStudents(const Reader& reader, const YAML::Node& node,
+                                      const StudySpec& spec) {
+  std::vector<StudentSpec> students;
+  if (!node) return students;
+  reader.RequireMap(node, "students", {});
+  for (const auto& item : node)
+    students.push_back(ReadStudent(reader, item.first, item.second, spec));
+  return students;
+}
+
 // A file named relative to the study file's folder; it must exist.
 std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
                                    const std::string& key) {
@@ -329,20 +416,42 @@ std::vector<SeededModel> StudySpec::SeededModels() const {
     models.push_back({config.name, ppo_seeds, config.compare_to});
   }
   for (const EnsembleSpec& ensemble : ensembles) models.push_back({ensemble.name, ensemble.count});
+  for (const StudentSpec& student : students) {
+    models.push_back({student.name, student.count, student.compare_to});
+  }
   return models;
+}
+
+const EnsembleSpec* StudySpec::FindEnsemble(const std::string& name) const {
+  const auto found = std::find_if(ensembles.begin(), ensembles.end(),
+                                  [&](const EnsembleSpec& e) { return e.name == name; });
+  return found == ensembles.end() ? nullptr : &*found;
+}
+
+int StudySpec::StartSeed(const StudentSpec& student, int k) const {
+  if (const EnsembleSpec* ensemble = FindEnsemble(student.teacher)) {
+    const auto member =
+        std::find(ensemble->members.begin(), ensemble->members.end(), student.start);
+    if (member != ensemble->members.end()) {
+      return ensemble->MemberSeed(static_cast<std::size_t>(member - ensemble->members.begin()), k);
+    }
+  }
+  return k;
 }
 
 StudySpec LoadStudySpec(const std::filesystem::path& path) {
   const YAML::Node root = LoadYamlFile(path);
   const Reader reader(path);
-  reader.RequireMap(root, "",
-                    {"name", "dataset", "vaes", "ppo", "ensembles", "evaluation", "vae_figures"});
+  reader.RequireMap(
+      root, "",
+      {"name", "dataset", "vaes", "ppo", "ensembles", "students", "evaluation", "vae_figures"});
   StudySpec spec;
   spec.name = root["name"] ? reader.Name(root["name"], "name") : path.stem().string();
   spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
   spec.vaes = ReadVaes(reader, root["vaes"]);
   ReadPpo(reader, root["ppo"], spec);
   spec.ensembles = ReadEnsembles(reader, root["ensembles"], spec);
+  spec.students = ReadStudents(reader, root["students"], spec);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
   const std::vector<SeededModel> models = spec.SeededModels();
@@ -350,7 +459,8 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
     const bool known = std::any_of(models.begin(), models.end(),
                                    [&](const SeededModel& m) { return m.name == name; });
     if (!known) {
-      reader.Fail(key, "'" + name + "' is not a PPO configuration or ensemble of the study");
+      reader.Fail(key,
+                  "'" + name + "' is not a PPO configuration, ensemble or student of the study");
     }
   };
   if (root["evaluation"] && root["evaluation"]["compare_to"]) {
@@ -364,8 +474,40 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
     }
     check_compared_with(config.compare_to, key);
   }
+  for (const StudentSpec& student : spec.students) {
+    if (student.compare_to.empty()) continue;
+    const std::string key = "students." + student.name + ".compare_to";
+    if (student.compare_to == student.name)
+      reader.Fail(key, "a student is not compared with itself");
+    check_compared_with(student.compare_to, key);
+  }
   return spec;
 }
+
+namespace {
+
+// The students whose teacher and start the (restricted) study still has, one per teacher seed.
+void KeepTaughtStudents(StudySpec& spec) {
+  std::vector<StudentSpec> kept;
+  for (StudentSpec student : spec.students) {
+    const auto has_config = [&](const std::string& name) {
+      return std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
+                         [&](const PpoConfigSpec& c) { return c.name == name; });
+    };
+    if (!has_config(student.start)) continue;
+    if (const EnsembleSpec* ensemble = spec.FindEnsemble(student.teacher)) {
+      student.count = ensemble->count;
+    } else if (has_config(student.teacher)) {
+      student.count = spec.ppo_seeds;
+    } else {
+      continue;
+    }
+    kept.push_back(student);
+  }
+  spec.students = kept;
+}
+
+}  // namespace
 
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds) {
   if (seeds > 0) {
@@ -376,6 +518,7 @@ StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, in
     spec.ensembles.erase(std::remove_if(spec.ensembles.begin(), spec.ensembles.end(),
                                         [](const EnsembleSpec& e) { return e.count == 0; }),
                          spec.ensembles.end());
+    KeepTaughtStudents(spec);
   }
   if (only.empty()) return spec;
   std::vector<PpoConfigSpec> configs;
@@ -402,6 +545,7 @@ StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, in
   spec.vaes.erase(std::remove_if(spec.vaes.begin(), spec.vaes.end(),
                                  [&](const VaeSpec& v) { return used_vaes.count(v.name) == 0; }),
                   spec.vaes.end());
+  KeepTaughtStudents(spec);
   return spec;
 }
 

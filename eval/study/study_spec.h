@@ -16,6 +16,8 @@
 //       shallow_log: {extractor: vae-shallow, vae: shallow, compare_to: shallow_locked}
 //   ensembles:                                      # agents averaging several runs' actions
 //     two_shallow: {members: [shallow_locked, shallow_locked], count: 2}
+//   students:                                       # teachers distilled into one network each
+//     distilled: {teacher: two_shallow, start: shallow_memory, options: {traps: 8}}
 //   evaluation:
 //     episodes: 1000                                # scenarios of the study's own table
 //     seed: 1
@@ -84,8 +86,25 @@ struct EnsembleSpec {
   int MaxCount(int seeds) const;
 };
 
-/// A model of several seeds in the report: a PPO configuration (its training seeds) or an ensemble
-/// kind (its ensembles); its models are named SeedModelName(name, k), k < seeds.
+/// A kind of student: each of a teacher's seeds distilled by DAgger into one recurrent network
+/// (scripts/distill_policy.py, run as build/bin/distill_policy). Student k imitates the teacher's
+/// seed k (ensemble k of an ensemble kind, run k of a configuration) and starts from a run of the
+/// recurrent configuration `start`: the one ensemble k takes when `start` is among its members,
+/// else seed k. Its distillation seed is k.
+struct StudentSpec {
+  std::string name;
+  std::string teacher;  ///< an ensemble kind or a PPO configuration of the study
+  std::string start;    ///< a recurrent PPO configuration (policy.recurrent_size > 0)
+  /// distill_policy's options, as "--name value" pairs in file order (after the study's
+  /// "--threads 1", which they may override).
+  std::vector<std::string> options;
+  int count = 1;             ///< students of this kind: the teacher's seeds
+  std::string compare_to{};  ///< as PpoConfigSpec::compare_to
+};
+
+/// A model of several seeds in the report: a PPO configuration (its training seeds), an ensemble
+/// kind (its ensembles) or a kind of student (its students); its models are named
+/// SeedModelName(name, k), k < seeds.
 struct SeededModel {
   std::string name;
   int seeds = 0;
@@ -112,6 +131,7 @@ struct StudySpec {
   Overrides ppo_overrides;
   std::vector<PpoConfigSpec> ppo_configs;
   std::vector<EnsembleSpec> ensembles;
+  std::vector<StudentSpec> students;
   EvaluationSpec evaluation;
   /// Also draw the paper's VAE figures (padding comparison, latent densities) on the study's
   /// dataset: eight small VAEs, a few minutes.
@@ -121,17 +141,21 @@ struct StudySpec {
   std::int64_t StepsOf(const PpoConfigSpec& config) const {
     return config.steps > 0 ? config.steps : ppo_steps;
   }
-  /// The PPO configurations, then the ensemble kinds, in file order.
+  /// The PPO configurations, then the ensemble kinds, then the kinds of student, in file order.
   std::vector<SeededModel> SeededModels() const;
+  /// The ensemble kind named `name`, if there is one.
+  const EnsembleSpec* FindEnsemble(const std::string& name) const;
+  /// The training seed of the run of `student.start` that student k starts from (StudentSpec).
+  int StartSeed(const StudentSpec& student, int k) const;
 };
 
 /// The study of `path`; relative reference-agent paths are taken from the study file's folder.
 StudySpec LoadStudySpec(const std::filesystem::path& path);
 
 /// The study restricted to the PPO configurations `only` (and the VAEs they use, the ensembles
-/// all of whose members it keeps, no VAE figures), with `seeds` training seeds when > 0 (and as
-/// many ensembles of each kind as they give, none when they give none). An unknown name is a
-/// UserError.
+/// all of whose members it keeps, the students whose teacher and start it keeps, no VAE
+/// figures), with `seeds` training seeds when > 0 (and as many ensembles of each kind as they
+/// give, none when they give none; a student per teacher seed). An unknown name is a UserError.
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
 
 }  // namespace colav

@@ -123,6 +123,55 @@ TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
                                       "/s/ppo/baseline/seed_2/policy.pt"}));
 }
 
+// Each student is a distill_policy job after its teacher and the run it starts from, finished
+// when its summary says so, continued from its state, and a model of the evaluations.
+TEST(JobGraphTest, StudentsAreDistilledFromTheirTeachersAndEvaluatedWithThem) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.ensembles = {{"mix", {"log", "locked", "locked"}, 1, std::nullopt, std::nullopt}};
+  spec.students = {{"taught", "mix", "locked", {"--traps", "8"}, 1, ""},
+                   {"from_log", "log", "baseline", {}, 3, ""}};
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const StudyJob& taught = Find(jobs, "students/taught/seed_0");
+  EXPECT_EQ(taught.program, "distill_policy");
+  const std::vector<std::string> args = {"/s/ensembles/mix/seed_0/policy.pt",
+                                         "/s/ppo/locked/seed_0/policy.pt",
+                                         "--out",
+                                         "/s/students/taught/seed_0/policy.pt",
+                                         "--seed",
+                                         "0",
+                                         "--threads",
+                                         "1",
+                                         "--traps",
+                                         "8"};
+  EXPECT_EQ(taught.args, args);
+  std::vector<std::string> resume = args;
+  resume.emplace_back("--resume");
+  EXPECT_EQ(taught.resume_args, resume);
+  EXPECT_EQ(taught.resume_marker, "/s/students/taught/seed_0/policy.pt.state");
+  EXPECT_EQ(taught.complete_marker, "/s/students/taught/seed_0/policy.pt.json");
+  EXPECT_EQ(taught.recorded_settings, taught.complete_marker);  // its settings, as it ran
+  std::vector<std::string> dependencies;
+  for (const std::size_t d : taught.dependencies) dependencies.push_back(jobs[d].id);
+  EXPECT_EQ(dependencies, (std::vector<std::string>{"ensembles/mix/seed_0", "ppo/locked/seed_0"}));
+  // A configuration as the teacher: its run k, the start's seed k.
+  const StudyJob& from_log = Find(jobs, "students/from_log/seed_2");
+  EXPECT_TRUE(
+      Has(from_log.args, {"/s/ppo/log/seed_2/policy.pt", "/s/ppo/baseline/seed_2/policy.pt",
+                          "--out", "/s/students/from_log/seed_2/policy.pt", "--seed", "2"}));
+  EXPECT_FALSE(from_log.check_configuration);  // seed 0 stands for its siblings
+  const StudyJob& evaluation = Find(jobs, "eval/study");
+  EXPECT_TRUE(Has(evaluation.args,
+                  {"--policy", "/s/students/taught/seed_0/policy.pt", "--name", "taught.seed_0"}));
+  EXPECT_NE(std::find(evaluation.dependencies.begin(), evaluation.dependencies.end(),
+                      static_cast<std::size_t>(&taught - jobs.data())),
+            evaluation.dependencies.end());
+  // After the runs and the ensemble, before the reference agent.
+  EXPECT_EQ(evaluation.expected_models.at(10), "taught.seed_0");
+  EXPECT_EQ(evaluation.expected_models.at(13), "from_log.seed_2");
+  EXPECT_EQ(evaluation.expected_models.at(14), "ref.agent");
+}
+
 TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);

@@ -158,6 +158,52 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_TRUE(SelectConfigs(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
 }
 
+// Student k imitates the teacher's seed k and starts from the run ensemble k takes of `start`
+// (seed k when `start` is not a member); its options become "--name value" pairs in file order.
+TEST(StudySpecTest, StudiesDistilTeachersIntoStudents) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
+  seeds: 4
+  set: {policy.recurrent_size: 8}
+  configs:
+    a: {}
+    memory: {}
+    flat: {set: {policy.recurrent_size: 0}}
+ensembles:
+  pair: {members: [a, memory, memory], stall_pace_mps: 0.1}
+students:
+  taught: {teacher: pair, start: memory, options: {traps: 8, stall-weight: 2.5}}
+  from_flat: {teacher: flat, start: memory, compare_to: taught}
+)"));
+  ASSERT_EQ(spec.students.size(), 2U);
+  const StudentSpec& taught = spec.students[0];
+  EXPECT_EQ(taught.teacher, "pair");
+  EXPECT_EQ(taught.count, 2);  // pair's ensembles
+  EXPECT_EQ(taught.options, (std::vector<std::string>{"--traps", "8", "--stall-weight", "2.5"}));
+  EXPECT_EQ(spec.StartSeed(taught, 1), 1);  // memory's first run in ensemble 1: seed 1
+  const StudentSpec& from_flat = spec.students[1];
+  EXPECT_EQ(from_flat.count, 4);  // flat's seeds
+  EXPECT_EQ(spec.StartSeed(from_flat, 3), 3);
+  EXPECT_EQ(from_flat.compare_to, "taught");
+  const std::vector<SeededModel> models = spec.SeededModels();
+  ASSERT_EQ(models.size(), 6U);  // 3 configurations, 1 ensemble kind, 2 kinds of student
+  EXPECT_EQ(models[4].name, "taught");
+  EXPECT_EQ(models[4].seeds, 2);
+  EXPECT_EQ(models[5].compare_to, "taught");
+  // Fewer seeds, fewer students; a student whose teacher or start goes, goes.
+  const StudySpec two_seeds = SelectConfigs(spec, {}, 2);
+  ASSERT_EQ(two_seeds.students.size(), 2U);
+  EXPECT_EQ(two_seeds.students[0].count, 1);
+  EXPECT_EQ(two_seeds.students[1].count, 2);
+  const StudySpec without_flat = SelectConfigs(spec, {"a", "memory"}, 0);
+  ASSERT_EQ(without_flat.students.size(), 1U);
+  EXPECT_EQ(without_flat.students[0].name, "taught");
+  const StudySpec without_a = SelectConfigs(spec, {"memory", "flat"}, 0);
+  ASSERT_EQ(without_a.students.size(), 1U);
+  EXPECT_EQ(without_a.students[0].name, "from_flat");
+  EXPECT_TRUE(SelectConfigs(spec, {"a", "flat"}, 0).students.empty());
+}
+
 TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
   const TemporaryFolder folder;
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -201,6 +247,32 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"ppo: {configs: {a: {}}}\nensembles: {e: {members: [a, a], stall_pace_mps: 0.1, "
        "stall_steps: 0}}",
        "ensembles.e.stall_steps"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {start: a}}",
+       "students.s.teacher"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: b, "
+       "start: a}}",
+       "students.s.teacher"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a}}",
+       "students.s.start"},
+      {"ppo: {configs: {a: {}}}\nstudents: {s: {teacher: a, start: a}}", "students.s.start"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {a: {teacher: a, "
+       "start: a}}",
+       "students.a"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a, options: {seed: 3}}}",
+       "students.s.options.seed"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a, options: {--traps: 3}}}",
+       "students.s.options.--traps"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a, options: [traps]}}",
+       "students.s.options"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a, compare_to: s}}",
+       "students.s.compare_to"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a, teachers: 2}}",
+       "students.s.teachers"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });

@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# Students in a study, end to end with the real programs at a tiny budget: a bad distill_policy
+# option is refused before any work; a memory relieved by the baseline at a stall, distilled into
+# one network per seed (build/bin/distill_policy), is evaluated and reported with the runs; a
+# rerun skips every job, and one whose options changed is refused; a study stopped during a
+# distillation exits 130 and the same command continues it from its state.
+#   study_students_test.sh BIN_DIR WORK_DIR
+set -euo pipefail
+BIN=$(cd "$1" && pwd)
+WORK=$2
+rm -rf "$WORK"
+mkdir -p "$WORK"
+WORK=$(cd "$WORK" && pwd)
+fail() { echo "study students test: $*" >&2; exit 1; }
+
+cat >"$WORK/tiny.yaml" <<'YAML'
+name: tiny_students
+dataset: {dataset.sim_scans: 150, dataset.synthetic_scans: 150}
+ppo:
+  seeds: 2
+  steps: 8192
+  set: {ppo.n_envs: 2, ppo.n_steps: 64, ppo.batch_size: 64, train.keep_checkpoints: false}
+  configs:
+    memory: {extractor: baseline, set: {policy.recurrent_size: 4}}
+    baseline: {extractor: baseline}
+ensembles:
+  relieved: {members: [memory, baseline], stall_pace_mps: 0.1, stall_steps: 2}
+students:
+  taught:
+    teacher: relieved
+    start: memory
+    options: {iterations: 2, steps: 16, worlds: 2, sequence: 8, batch: 4, epochs: 1, keep: 2}
+evaluation: {episodes: 4, seed: 3, paper_episodes: 0}
+YAML
+
+# A bad option of distill_policy is refused before any job runs, naming the job and the option.
+sed -e 's/iterations: 2,/iteration: 2,/' "$WORK/tiny.yaml" >"$WORK/bad.yaml"
+status=0
+"$BIN/study" "$WORK/bad.yaml" --out "$WORK/bad" 2>"$WORK/bad.err" >/dev/null || status=$?
+[ $status -eq 2 ] || { cat "$WORK/bad.err"; fail "a bad option gave exit status $status, not 2"; }
+[ "$(wc -l <"$WORK/bad.err")" -eq 1 ] &&
+  grep -q "job students/taught/seed_0: distill_policy: unrecognized arguments: --iteration 2" \
+    "$WORK/bad.err" || { cat "$WORK/bad.err"; fail "bad option message"; }
+[ ! -e "$WORK/bad/ppo" ] || fail "a job ran before the study was checked"
+
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
+  { tail -20 "$WORK/first.err"; fail "first run failed"; }
+for k in 0 1; do
+  [ -s "$WORK/run/students/taught/seed_$k/policy.pt" ] || fail "no student $k"
+  [ ! -e "$WORK/run/students/taught/seed_$k/policy.pt.state" ] || fail "student $k left its state"
+done
+grep -q "^- taught: 2 of relieved starting from memory, with --iterations 2 .*; seconds of each distillation: [0-9]*, [0-9]*$" \
+  "$WORK/run/REPORT.md" || { grep taught "$WORK/run/REPORT.md"; fail "no students in the report"; }
+# the dataset, 4 PPO runs, 2 figures, 2 ensembles, 2 students, 1 evaluation
+grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+"$COLAV_PYTHON3" - "$WORK/run" <<'PY' || fail "malformed summary.json or student summary"
+import csv, json, sys
+run = sys.argv[1]
+s = json.load(open(f"{run}/summary.json"))
+assert s["students"]["taught"]["teacher"] == "relieved", s["students"]
+assert s["students"]["taught"]["count"] == 2 and len(s["students"]["taught"]["seconds"]) == 2
+models = {m["name"]: m for m in s["scenario_sets"]["study"]["models"]}
+assert set(models) == {"memory", "baseline", "relieved", "taught"}, models.keys()
+assert models["taught"]["seeds"] == 2
+poi = [(p["model"], p["over"]) for p in s["scenario_sets"]["study"]["probability_of_improvement"]]
+assert ("taught", "baseline") in poi, poi
+rows = [r for r in csv.DictReader(open(f"{run}/eval/study/episodes.csv"))
+        if r["model"] == "taught.seed_1"]
+assert len(rows) == 4, rows
+student = json.load(open(f"{run}/students/taught/seed_1/policy.pt.json"))
+assert student["finished"] is True and len(student["iterations"]) == 2, student
+assert student["settings"]["seed"] == 1 and student["settings"]["threads"] == 1, student
+assert student["settings"]["teacher"].endswith("/ensembles/relieved/seed_1/policy.pt"), student
+assert student["settings"]["init"].endswith("/ppo/memory/seed_1/policy.pt"), student
+PY
+
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
+  fail "second run failed"
+grep -q "0 jobs run, 12 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+
+# A study file whose options changed after its students finished is refused before any work.
+sed -e 's/epochs: 1,/epochs: 2,/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"
+status=0
+"$BIN/study" "$WORK/changed.yaml" --out "$WORK/run" 2>"$WORK/changed.err" >/dev/null || status=$?
+[ $status -eq 2 ] && [ "$(wc -l <"$WORK/changed.err")" -eq 1 ] &&
+  grep -q "job students/taught/seed_0: the finished run in $WORK/run/students/taught/seed_0 has settings.epochs = 1, the study asks for 2" \
+    "$WORK/changed.err" || { cat "$WORK/changed.err"; fail "changed options on finished students"; }
+
+# Stopped during a longer distillation, then continued by the same command.
+sed -e 's/iterations: 2,/iterations: 40,/' "$WORK/tiny.yaml" >"$WORK/long.yaml"
+mkdir -p "$WORK/long"
+cp -r "$WORK/run/ppo" "$WORK/run/ensembles" "$WORK/long/"
+"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --seeds 1 --jobs 1 \
+  >"$WORK/long1.out" 2>"$WORK/long1.err" &
+pid=$!
+state="$WORK/long/students/taught/seed_0/policy.pt.state"
+for _ in $(seq 600); do
+  [ -f "$state" ] && break
+  sleep 0.1
+done
+[ -f "$state" ] || { kill $pid; cat "$WORK/long1.err"; fail "no distillation state"; }
+kill -TERM $pid
+status=0
+wait $pid || status=$?
+[ $status -eq 130 ] || { cat "$WORK/long1.err"; fail "stopped study exited $status, not 130"; }
+grep -q '"finished": false' "$WORK/long/students/taught/seed_0/policy.pt.json" ||
+  fail "the distillation finished before the stop"
+"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --seeds 1 --jobs 1 \
+  >"$WORK/long2.out" 2>"$WORK/long2.err" || { tail "$WORK/long2.err"; fail "resume failed"; }
+grep -q "resumed students/taught/seed_0" "$WORK/long2.err" || fail "the student was not resumed"
+grep -q "resuming after iteration" "$WORK/long/logs/students_taught_seed_0.log" ||
+  fail "the distillation did not continue from its state"
+"$COLAV_PYTHON3" - "$WORK/long/students/taught/seed_0/policy.pt.json" <<'PY' || fail "resumed summary"
+import json, sys
+s = json.load(open(sys.argv[1]))
+assert s["finished"] is True, s
+assert [i["iteration"] for i in s["iterations"]] == list(range(1, 41)), s["iterations"]
+PY
+echo "study students test passed"
