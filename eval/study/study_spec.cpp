@@ -307,32 +307,22 @@ StudentSpec ReadStudent(const Reader& reader, const YAML::Node& name, const YAML
   StudentSpec student;
   const std::string key = "students." + name.as<std::string>();
   student.name = reader.Name(name, key);
-  const auto config = [&](const std::string& config_name) {
-    return std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                        [&](const PpoConfigSpec& c) { return c.name == config_name; });
-  };
-  if (config(student.name) != spec.ppo_configs.end() || spec.FindEnsemble(student.name)) {
+  if (spec.FindConfig(student.name) || spec.FindEnsemble(student.name)) {
     reader.Fail(key, "is also the name of a PPO configuration or ensemble");
   }
   reader.RequireMap(node, key, {"teacher", "start", "options", "compare_to"});
-  if (!node["teacher"])
-    reader.Fail(key + ".teacher", "missing: the ensemble or configuration imitated");
+  for (const char* required : {"teacher", "start"}) {
+    if (!node[required]) reader.Fail(key + "." + required, "missing");
+  }
   student.teacher = reader.String(node["teacher"], key + ".teacher");
-  if (const EnsembleSpec* ensemble = spec.FindEnsemble(student.teacher)) {
-    student.count = ensemble->count;
-  } else if (config(student.teacher) != spec.ppo_configs.end()) {
-    student.count = spec.ppo_seeds;
-  } else {
+  student.count = spec.TeacherSeeds(student.teacher);
+  if (student.count == 0) {
     reader.Fail(key + ".teacher",
                 "'" + student.teacher + "' is not an ensemble or PPO configuration of the study");
   }
-  if (!node["start"])
-    reader.Fail(key + ".start", "missing: the recurrent configuration it starts as");
   student.start = reader.String(node["start"], key + ".start");
-  const auto start = config(student.start);
-  if (start == spec.ppo_configs.end()) {
-    reader.Fail(key + ".start", "'" + student.start + "' is not a PPO configuration");
-  }
+  const PpoConfigSpec* start = spec.FindConfig(student.start);
+  if (!start) reader.Fail(key + ".start", "'" + student.start + "' is not a PPO configuration");
   if (!(RecurrentSize(spec, *start) > 0)) {
     reader.Fail(key + ".start", "'" + student.start +
                                     "' is not recurrent: give it policy.recurrent_size in its set");
@@ -347,8 +337,9 @@ std::vector<StudentSpec> ReadStudents(const Reader& reader, const YAML::Node& no
   std::vector<StudentSpec> students;
   if (!node) return students;
   reader.RequireMap(node, "students", {});
-  for (const auto& item : node)
+  for (const auto& item : node) {
     students.push_back(ReadStudent(reader, item.first, item.second, spec));
+  }
   return students;
 }
 
@@ -422,6 +413,17 @@ std::vector<SeededModel> StudySpec::SeededModels() const {
   return models;
 }
 
+const PpoConfigSpec* StudySpec::FindConfig(const std::string& name) const {
+  const auto found = std::find_if(ppo_configs.begin(), ppo_configs.end(),
+                                  [&](const PpoConfigSpec& c) { return c.name == name; });
+  return found == ppo_configs.end() ? nullptr : &*found;
+}
+
+int StudySpec::TeacherSeeds(const std::string& teacher) const {
+  if (const EnsembleSpec* ensemble = FindEnsemble(teacher)) return ensemble->count;
+  return FindConfig(teacher) ? ppo_seeds : 0;
+}
+
 const EnsembleSpec* StudySpec::FindEnsemble(const std::string& name) const {
   const auto found = std::find_if(ensembles.begin(), ensembles.end(),
                                   [&](const EnsembleSpec& e) { return e.name == name; });
@@ -490,19 +492,8 @@ namespace {
 void KeepTaughtStudents(StudySpec& spec) {
   std::vector<StudentSpec> kept;
   for (StudentSpec student : spec.students) {
-    const auto has_config = [&](const std::string& name) {
-      return std::any_of(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                         [&](const PpoConfigSpec& c) { return c.name == name; });
-    };
-    if (!has_config(student.start)) continue;
-    if (const EnsembleSpec* ensemble = spec.FindEnsemble(student.teacher)) {
-      student.count = ensemble->count;
-    } else if (has_config(student.teacher)) {
-      student.count = spec.ppo_seeds;
-    } else {
-      continue;
-    }
-    kept.push_back(student);
+    student.count = spec.TeacherSeeds(student.teacher);
+    if (student.count > 0 && spec.FindConfig(student.start)) kept.push_back(student);
   }
   spec.students = kept;
 }

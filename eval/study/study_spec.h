@@ -143,8 +143,13 @@ struct StudySpec {
   }
   /// The PPO configurations, then the ensemble kinds, then the kinds of student, in file order.
   std::vector<SeededModel> SeededModels() const;
+  /// The PPO configuration named `name`, if there is one.
+  const PpoConfigSpec* FindConfig(const std::string& name) const;
   /// The ensemble kind named `name`, if there is one.
   const EnsembleSpec* FindEnsemble(const std::string& name) const;
+  /// The seeds of a teacher: an ensemble kind's count, a configuration's training seeds; 0 when
+  /// the study has neither of that name.
+  int TeacherSeeds(const std::string& teacher) const;
   /// The training seed of the run of `student.start` that student k starts from (StudentSpec).
   int StartSeed(const StudentSpec& student, int k) const;
 };
