@@ -3,17 +3,13 @@
 # launch ranks through scripts/cluster/, as a cluster's user would.
 # Sets TEST_NAME, BIN, WORK, TINY (the tiny study file) and CLUSTER (scripts/cluster).
 
-fail() { echo "$TEST_NAME: $*" >&2; exit 1; }
+# shellcheck source=tests/e2e/study_test_lib.sh
+source "$(dirname "${BASH_SOURCE[0]}")/study_test_lib.sh"
 
 # cluster_setup NAME BIN_DIR WORK_DIR: a fresh work folder; mpirun installed (openmpi-bin) if
 # missing.
 cluster_setup() {
-  TEST_NAME=$1
-  BIN=$(cd "$2" && pwd)
-  WORK=$3
-  rm -rf "$WORK"
-  mkdir -p "$WORK"
-  WORK=$(cd "$WORK" && pwd)
+  study_test_setup "$@"
   # shellcheck disable=SC2034  # for the scripts that source this file
   TINY="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)/cluster_tiny_study.yaml"
   CLUSTER="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../scripts/cluster" && pwd)"

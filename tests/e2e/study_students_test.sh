@@ -6,12 +6,9 @@
 # distillation exits 130 and the same command continues it from its state.
 #   study_students_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
-BIN=$(cd "$1" && pwd)
-WORK=$2
-rm -rf "$WORK"
-mkdir -p "$WORK"
-WORK=$(cd "$WORK" && pwd)
-fail() { echo "study students test: $*" >&2; exit 1; }
+# shellcheck source=tests/e2e/study_test_lib.sh
+source "$(dirname "$0")/study_test_lib.sh"
+study_test_setup "study students test" "$1" "$2"
 
 cat >"$WORK/tiny.yaml" <<'YAML'
 name: tiny_students
@@ -35,12 +32,8 @@ YAML
 
 # A bad option of distill_policy is refused before any job runs, naming the job and the option.
 sed -e 's/iterations: 2,/iteration: 2,/' "$WORK/tiny.yaml" >"$WORK/bad.yaml"
-status=0
-"$BIN/study" "$WORK/bad.yaml" --out "$WORK/bad" 2>"$WORK/bad.err" >/dev/null || status=$?
-[ $status -eq 2 ] || { cat "$WORK/bad.err"; fail "a bad option gave exit status $status, not 2"; }
-[ "$(wc -l <"$WORK/bad.err")" -eq 1 ] &&
-  grep -q "job students/taught/seed_0: distill_policy: unrecognized arguments: --iteration 2" \
-    "$WORK/bad.err" || { cat "$WORK/bad.err"; fail "bad option message"; }
+study_refuses bad "job students/taught/seed_0: distill_policy: unrecognized arguments: --iteration 2" \
+  "$WORK/bad.yaml" --out "$WORK/bad"
 [ ! -e "$WORK/bad/ppo" ] || fail "a job ran before the study was checked"
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
@@ -74,35 +67,19 @@ assert student["settings"]["teacher"].endswith("/ensembles/relieved/seed_1/polic
 assert student["settings"]["init"].endswith("/ppo/memory/seed_1/policy.pt"), student
 PY
 
-"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
-  fail "second run failed"
-grep -q "0 jobs run, 12 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+study_skips_all 12 "$WORK/tiny.yaml" --out "$WORK/run"
 
 # A study file whose options changed after its students finished is refused before any work.
 sed -e 's/epochs: 1,/epochs: 2,/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"
-status=0
-"$BIN/study" "$WORK/changed.yaml" --out "$WORK/run" 2>"$WORK/changed.err" >/dev/null || status=$?
-[ $status -eq 2 ] && [ "$(wc -l <"$WORK/changed.err")" -eq 1 ] &&
-  grep -q "job students/taught/seed_0: the finished run in $WORK/run/students/taught/seed_0 has settings.epochs = 1, the study asks for 2" \
-    "$WORK/changed.err" || { cat "$WORK/changed.err"; fail "changed options on finished students"; }
+study_refuses changed "job students/taught/seed_0: the finished run in $WORK/run/students/taught/seed_0 has settings.epochs = 1, the study asks for 2" \
+  "$WORK/changed.yaml" --out "$WORK/run"
 
 # Stopped during a longer distillation, then continued by the same command.
 sed -e 's/iterations: 2,/iterations: 40,/' "$WORK/tiny.yaml" >"$WORK/long.yaml"
 mkdir -p "$WORK/long"
 cp -r "$WORK/run/ppo" "$WORK/run/ensembles" "$WORK/long/"
-"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --seeds 1 --jobs 1 \
-  >"$WORK/long1.out" 2>"$WORK/long1.err" &
-pid=$!
-state="$WORK/long/students/taught/seed_0/policy.pt.state"
-for _ in $(seq 600); do
-  [ -f "$state" ] && break
-  sleep 0.1
-done
-[ -f "$state" ] || { kill $pid; cat "$WORK/long1.err"; fail "no distillation state"; }
-kill -TERM $pid
-status=0
-wait $pid || status=$?
-[ $status -eq 130 ] || { cat "$WORK/long1.err"; fail "stopped study exited $status, not 130"; }
+study_stopped_once "$WORK/long/students/taught/seed_0/policy.pt.state" long1 "$WORK/long.yaml" \
+  --out "$WORK/long" --seeds 1 --jobs 1
 grep -q '"finished": false' "$WORK/long/students/taught/seed_0/policy.pt.json" ||
   fail "the distillation finished before the stop"
 "$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --seeds 1 --jobs 1 \

@@ -6,12 +6,9 @@
 # by SIGTERM during a PPO run exits 130 and the same command then finishes it.
 #   study_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
-BIN=$(cd "$1" && pwd)
-WORK=$2
-rm -rf "$WORK"
-mkdir -p "$WORK"
-WORK=$(cd "$WORK" && pwd)
-fail() { echo "study test: $*" >&2; exit 1; }
+# shellcheck source=tests/e2e/study_test_lib.sh
+source "$(dirname "$0")/study_test_lib.sh"
+study_test_setup "study test" "$1" "$2"
 
 cat >"$WORK/tiny.yaml" <<'YAML'
 name: tiny
@@ -32,11 +29,8 @@ YAML
 
 # A bad key of a program is refused before any job runs, naming the job and the key.
 sed -e 's/ppo.n_envs: 2/ppo.n_env: 2/' "$WORK/tiny.yaml" >"$WORK/bad.yaml"
-status=0
-"$BIN/study" "$WORK/bad.yaml" --out "$WORK/bad" 2>"$WORK/bad.err" >/dev/null || status=$?
-[ $status -eq 2 ] || fail "a bad key gave exit status $status, not 2"
-[ "$(wc -l <"$WORK/bad.err")" -eq 1 ] && grep -q "job ppo/shallow_locked/seed_0: train_ppo: .*ppo.n_env" \
-  "$WORK/bad.err" || { cat "$WORK/bad.err"; fail "bad key message"; }
+study_refuses bad "job ppo/shallow_locked/seed_0: train_ppo: .*ppo.n_env" "$WORK/bad.yaml" \
+  --out "$WORK/bad"
 [ ! -e "$WORK/bad/data" ] || fail "a job ran before the study was checked"
 
 # So is an ensemble of runs that would observe differently (ensemble_policy refuses them).
@@ -50,10 +44,8 @@ ppo:
 ensembles:
   pair: {members: [log, linear]}
 YAML
-status=0
-"$BIN/study" "$WORK/mixed.yaml" --out "$WORK/mixed" 2>"$WORK/mixed.err" >/dev/null || status=$?
-[ $status -eq 2 ] && grep -q "ensembles.pair: the runs of log .* observe differently" \
-  "$WORK/mixed.err" || { cat "$WORK/mixed.err"; fail "an ensemble of mixed observations"; }
+study_refuses mixed "ensembles.pair: the runs of log .* observe differently" "$WORK/mixed.yaml" \
+  --out "$WORK/mixed"
 [ ! -e "$WORK/mixed/data" ] || fail "a job ran before the ensemble was checked"
 
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
@@ -135,33 +127,18 @@ grep -q "total_steps: 3072" "$WORK/run/ppo/shallow_locked/seed_1/config.yaml" &&
 grep -q "training seed(s) of 2048 steps (shallow_locked: 3072);" "$WORK/run/REPORT.md" ||
   fail "own steps not in the report"
 
-"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" >"$WORK/second.out" 2>"$WORK/second.err" ||
-  fail "second run failed"
-grep -q "0 jobs run, 12 skipped" "$WORK/second.err" || { cat "$WORK/second.err"; fail "not skipped"; }
+study_skips_all 12 "$WORK/tiny.yaml" --out "$WORK/run"
 
 # A study file changed after its runs finished is refused before any work, naming the setting;
 # the finished runs are not reported as runs of the new file.
 sed -e 's/^  steps: 2048/  steps: 2560/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"
-status=0
-"$BIN/study" "$WORK/changed.yaml" --out "$WORK/run" 2>"$WORK/changed.err" >/dev/null || status=$?
-[ $status -eq 2 ] && [ "$(wc -l <"$WORK/changed.err")" -eq 1 ] &&
-  grep -q "job ppo/baseline/seed_0: the finished run in $WORK/run/ppo/baseline/seed_0 has ppo.total_steps = 2048, the study asks for 2560" \
-    "$WORK/changed.err" || { cat "$WORK/changed.err"; fail "a changed study file on finished runs"; }
+study_refuses changed "job ppo/baseline/seed_0: the finished run in $WORK/run/ppo/baseline/seed_0 has ppo.total_steps = 2048, the study asks for 2560" \
+  "$WORK/changed.yaml" --out "$WORK/run"
 
 # Stopped in the middle of a longer PPO run, then resumed by the same command.
 sed -e 's/steps: 2048/steps: 400000/' "$WORK/tiny.yaml" >"$WORK/long.yaml"
-"$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --only baseline --seeds 1 --jobs 1 \
-  >"$WORK/long1.out" 2>"$WORK/long1.err" &
-pid=$!
-for _ in $(seq 300); do
-  [ -f "$WORK/long/ppo/baseline/seed_0/training_state.pt" ] && break
-  sleep 0.1
-done
-[ -f "$WORK/long/ppo/baseline/seed_0/training_state.pt" ] || { kill $pid; fail "no checkpoint"; }
-kill -TERM $pid
-status=0
-wait $pid || status=$?
-[ $status -eq 130 ] || { cat "$WORK/long1.err"; fail "stopped study exited $status, not 130"; }
+study_stopped_once "$WORK/long/ppo/baseline/seed_0/training_state.pt" long1 "$WORK/long.yaml" \
+  --out "$WORK/long" --only baseline --seeds 1 --jobs 1
 grep -q '"finished": false' "$WORK/long/ppo/baseline/seed_0/summary.json" ||
   fail "the PPO run finished before the stop"
 "$BIN/study" "$WORK/long.yaml" --out "$WORK/long" --only baseline --seeds 1 --jobs 1 \
