@@ -168,7 +168,7 @@ void AddStudentJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
       StudyJob job = NewJob(StudentFolder(student.name, k).string(), "distill_policy",
                             {teacher.string(), start.string(), "--out", policy.string(), "--seed",
                              std::to_string(k), "--threads", std::to_string(kStudentThreads)},
-                            policy.string() + ".json", kStudentSeconds);
+                            out / StudentSummaryFile(student.name, k), kStudentSeconds);
       job.args.insert(job.args.end(), student.options.begin(), student.options.end());
       job.resume_args = job.args;
       job.resume_args.emplace_back("--resume");
@@ -201,6 +201,10 @@ std::filesystem::path RunFolder(const std::string& config, int seed) {
 
 std::filesystem::path StudentFolder(const std::string& student, int k) {
   return std::filesystem::path("students") / student / ("seed_" + std::to_string(k));
+}
+
+std::filesystem::path StudentSummaryFile(const std::string& student, int k) {
+  return StudentFolder(student, k) / "policy.pt.json";
 }
 
 std::string SeedModelName(const std::string& config, int seed) {

@@ -59,9 +59,12 @@ std::filesystem::path TrainingFigurePath(const std::string& config);
 /// "ppo/<config>/seed_<k>": a PPO run's folder under the study folder, and its job's id.
 std::filesystem::path RunFolder(const std::string& config, int seed);
 
-/// "students/<student>/seed_<k>": a student's folder under the study folder (its policy.pt, and
-/// distill_policy's policy.pt.json), and its job's id.
+/// "students/<student>/seed_<k>": a student's folder under the study folder, and its job's id.
 std::filesystem::path StudentFolder(const std::string& student, int k);
+
+/// "<StudentFolder>/policy.pt.json": distill_policy's summary of the student's run (its settings,
+/// each iteration, whether it finished), relative to the study's output folder.
+std::filesystem::path StudentSummaryFile(const std::string& student, int k);
 
 /// "<config>.seed_<k>": the model name of a PPO run in evaluations.
 std::string SeedModelName(const std::string& config, int seed);

@@ -419,7 +419,7 @@ std::vector<double> DistillationSeconds(const StudentSpec& student,
                                         const std::filesystem::path& out) {
   std::vector<double> seconds;
   for (int k = 0; k < student.count; ++k) {
-    std::ifstream in(out / StudentFolder(student.name, k) / "policy.pt.json");
+    std::ifstream in(out / StudentSummaryFile(student.name, k));
     const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
     seconds.push_back(summary.is_object() ? summary.value("seconds", NAN) : NAN);
   }
