@@ -254,15 +254,17 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
   return ensemble;
 }
 
-std::vector<EnsembleSpec> ReadEnsembles(const Reader& reader, const YAML::Node& node,
-                                        const StudySpec& spec) {
-  std::vector<EnsembleSpec> ensembles;
-  if (!node) return ensembles;
-  reader.RequireMap(node, "ensembles", {});
-  for (const auto& item : node) {
-    ensembles.push_back(ReadEnsemble(reader, item.first, item.second, spec));
-  }
-  return ensembles;
+// The entries of the section `section` (a mapping of names to entries; absent: none), each read
+// by `read_entry(reader, name, entry, spec)`.
+template <typename ReadEntry>
+auto ReadNamedEntries(const Reader& reader, const YAML::Node& node, const std::string& section,
+                      const StudySpec& spec, ReadEntry read_entry) {
+  std::vector<decltype(read_entry(reader, node, node, spec))> entries;
+  if (!node) return entries;
+  reader.RequireMap(node, section, {});
+  for (const auto& item : node)
+    entries.push_back(read_entry(reader, item.first, item.second, spec));
+  return entries;
 }
 
 // distill_policy's options the study sets itself (StudentSpec).
@@ -330,17 +332,6 @@ StudentSpec ReadStudent(const Reader& reader, const YAML::Node& name, const YAML
   student.options = StudentOptions(reader, node["options"], key + ".options");
   if (node["compare_to"]) student.compare_to = reader.Name(node["compare_to"], key + ".compare_to");
   return student;
-}
-
-std::vector<StudentSpec> ReadStudents(const Reader& reader, const YAML::Node& node,
-                                      const StudySpec& spec) {
-  std::vector<StudentSpec> students;
-  if (!node) return students;
-  reader.RequireMap(node, "students", {});
-  for (const auto& item : node) {
-    students.push_back(ReadStudent(reader, item.first, item.second, spec));
-  }
-  return students;
 }
 
 // A file named relative to the study file's folder; it must exist.
@@ -452,8 +443,8 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
   spec.vaes = ReadVaes(reader, root["vaes"]);
   ReadPpo(reader, root["ppo"], spec);
-  spec.ensembles = ReadEnsembles(reader, root["ensembles"], spec);
-  spec.students = ReadStudents(reader, root["students"], spec);
+  spec.ensembles = ReadNamedEntries(reader, root["ensembles"], "ensembles", spec, ReadEnsemble);
+  spec.students = ReadNamedEntries(reader, root["students"], "students", spec, ReadStudent);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
   const std::vector<SeededModel> models = spec.SeededModels();
