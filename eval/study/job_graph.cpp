@@ -3,7 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
+#include <cstdlib>
 #include <map>
+#include <string_view>
 #include <utility>
 
 namespace colav {
@@ -18,6 +21,10 @@ constexpr double kFigureSeconds = 2.0;
 constexpr double kVaeFiguresSeconds = 150.0;
 constexpr double kEnsembleSeconds = 2.0;
 constexpr double kStudentSeconds = 600.0;  // distill_policy's defaults, two at a time
+// distill_policy's options its cost is proportional to (the steps it plays and trains on), with
+// their defaults.
+constexpr std::array<std::pair<std::string_view, double>, 3> kStudentCostOptions = {
+    {{"--iterations", 8.0}, {"--worlds", 32.0}, {"--steps", 2048.0}}};
 // distill_policy's threads unless a student's options say otherwise: the same file whatever the
 // machine (its results depend on the thread count), and two students keep two cores busy.
 constexpr int kStudentThreads = 1;
@@ -45,6 +52,22 @@ std::filesystem::path TeacherPolicyFile(const StudySpec& spec, const std::filesy
                                         const std::string& teacher, int k) {
   return spec.FindEnsemble(teacher) ? EnsemblePolicyFile(out, teacher, k)
                                     : RunPolicy(out, teacher, k);
+}
+
+// A student's rough cost: kStudentSeconds scaled by its options (pairs of "--name value") that
+// kStudentCostOptions names. A value that is not a positive number scales nothing: the student's
+// --print-config check refuses it before any job runs.
+double StudentSeconds(const std::vector<std::string>& options) {
+  double seconds = kStudentSeconds;
+  for (std::size_t i = 0; i + 1 < options.size(); i += 2) {
+    for (const auto& [name, default_value] : kStudentCostOptions) {
+      if (options[i] != name) continue;
+      char* end = nullptr;
+      const double value = std::strtod(options[i + 1].c_str(), &end);
+      if (*end == '\0' && value > 0.0) seconds *= value / default_value;
+    }
+  }
+  return seconds;
 }
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
@@ -165,10 +188,11 @@ void AddStudentJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
       const std::filesystem::path policy = StudentPolicyFile(out, student.name, k);
       const std::filesystem::path teacher = TeacherPolicyFile(spec, out, student.teacher, k);
       const std::filesystem::path start = RunPolicy(out, student.start, spec.StartSeed(student, k));
-      StudyJob job = NewJob(StudentFolder(student.name, k).string(), "distill_policy",
-                            {teacher.string(), start.string(), "--out", policy.string(), "--seed",
-                             std::to_string(k), "--threads", std::to_string(kStudentThreads)},
-                            out / StudentSummaryFile(student.name, k), kStudentSeconds);
+      StudyJob job =
+          NewJob(StudentFolder(student.name, k).string(), "distill_policy",
+                 {teacher.string(), start.string(), "--out", policy.string(), "--seed",
+                  std::to_string(k), "--threads", std::to_string(kStudentThreads)},
+                 out / StudentSummaryFile(student.name, k), StudentSeconds(student.options));
       job.args.insert(job.args.end(), student.options.begin(), student.options.end());
       job.resume_args = job.args;
       job.resume_args.emplace_back("--resume");

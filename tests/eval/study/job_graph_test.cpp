@@ -172,6 +172,23 @@ TEST(JobGraphTest, StudentsAreDistilledFromTheirTeachersAndEvaluatedWithThem) {
   EXPECT_EQ(evaluation.expected_models.at(14), "ref.agent");
 }
 
+// A student's estimated cost, which orders the jobs (the longest first) and makes the ETA, grows
+// with the steps it plays: its iterations, worlds and steps per world.
+TEST(JobGraphTest, AStudentsEstimatedCostGrowsWithTheStepsItPlays) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.students = {{"plain", "log", "baseline", {}, 1, ""},
+                   {"wide", "log", "baseline", {"--worlds", "64", "--traps", "8"}, 1, ""},
+                   {"long", "log", "baseline", {"--iterations", "12", "--steps", "1024"}, 1, ""},
+                   {"bad", "log", "baseline", {"--worlds", "x64"}, 1, ""}};
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const double plain = Find(jobs, "students/plain/seed_0").estimated_s;
+  EXPECT_GT(plain, 0.0);
+  EXPECT_DOUBLE_EQ(Find(jobs, "students/wide/seed_0").estimated_s, 2.0 * plain);
+  EXPECT_DOUBLE_EQ(Find(jobs, "students/long/seed_0").estimated_s, 0.75 * plain);
+  EXPECT_DOUBLE_EQ(Find(jobs, "students/bad/seed_0").estimated_s, plain);  // refused later
+}
+
 TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);
