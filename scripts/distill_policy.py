@@ -3,9 +3,10 @@
 
 The teacher is any policy file `evaluate` runs: a trained `policy.pt`, or an `ensemble_policy`
 file whose members hand the helm to each other. The student starts as INIT, a recurrent
-`policy.pt` of `train_ppo` (`policy.recurrent_size` > 0), and keeps its architecture and its
-perception (the encoder and extractor stay as they are, as a locked encoder does); its memory
-(the GRU), actor layers and action layer learn to act as the teacher does:
+`policy.pt` of `train_ppo` (`policy.recurrent_size` > 0), and keeps its architecture; its memory
+(the GRU), actor layers and action layer learn to act as the teacher does. Its perception (the
+encoder and extractor, `features_extractor_*`) stays as it is, as a locked encoder does, unless
+--perception-learning-rate is above 0: then it learns too, at that step size:
 
 1. Each iteration plays STEPS steps in each of WORLDS training worlds (the paper's, as
    `train_ppo` trains in, under the policies' observation settings). The teacher drives in the
@@ -25,7 +26,8 @@ perception (the encoder and extractor stay as they are, as a locked encoder does
    --stall-memory L, a linear readout of the student's memory, used in training only (the
    written file has none), learns the teacher's stall rule at every step (its pace average and
    stall count, colav.Policy.pace and .stalls), its squared error added L times to the loss:
-   the memory is taught to keep what tells a second stall from a first.
+   the memory is taught to keep what tells a second stall from a first. A perception that
+   learns sees the steps' observations again, through its weights of the moment.
 3. The student is written after every iteration (a temporary file, then renamed), checked
    against the file's own `step`, with INIT's interface, recorded observation settings and
    value layers (which do not act, and are not trained). So is STUDENT.pt.json: the run's
@@ -59,12 +61,13 @@ import colav
 RECURRENT = ("recurrent_weight_ih", "recurrent_weight_hh", "recurrent_bias_ih",
              "recurrent_bias_hh")
 ACTOR_LAYER = "mlp_extractor_policy_net_{}_{}"
+PERCEPTION = "features_extractor_"  # the prefix of the parameters `features` computes with
 TRAP_SEARCH_WORLDS = 64  # training worlds INIT plays at once while the traps are searched for
 TRAP_SEARCH_STEPS = 20000  # steps per search world at most (about 2,000 episodes in all)
 TRAP_SEARCH_SEED = 1000000  # added to --seed: the search's worlds are not the iterations' ones
 STALL_RULE = ("pace", "stalls")  # the teacher's stall-rule readings (colav.Policy) recorded
-STATE_KEYS = {"settings", "iterations_done", "student", "optimiser", "generator",
-              "rollouts", "log"}  # what save_state writes
+STATE_KEYS = {"settings", "iterations_done", "student", "perception", "optimiser",
+              "generator", "rollouts", "log"}  # what save_state writes
 
 
 class BadInput(Exception):
@@ -144,10 +147,13 @@ class Rollout:
     """One iteration's steps: features [T, N, F], teacher actions [T, N, 2], the teacher's
     stall rule (STALL_RULE) [T, N, 2] (zeros without one), episode starts [T, N] and the
     student's memory before each step [T, N, H]; the last step's observations [N, O] check the
-    written file."""
+    written file. A perception that learns needs every step's observations [T, N, O] (else
+    None: 6 rollouts of them take 300 MB)."""
 
-    def __init__(self, steps, worlds, feature_size, memory_size):
+    def __init__(self, steps, worlds, feature_size, memory_size, observation_size=0):
         self.last_observations = None
+        self.observations = (torch.empty(steps, worlds, observation_size) if observation_size
+                             else None)
         self.features = torch.empty(steps, worlds, feature_size)
         self.targets = torch.empty(steps, worlds, 2)
         self.stall_rule = torch.empty(steps, worlds, len(STALL_RULE))
@@ -247,7 +253,10 @@ def play(worlds, teacher, init, student, initial, args, iteration):
         with torch.no_grad():
             features = init.features(observation)
             if rollout is None:
-                rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size)
+                rollout = Rollout(args.steps, args.worlds, features.shape[1], memory_size,
+                                  observation.shape[1] if learns_perception(args) else 0)
+            if rollout.observations is not None:
+                rollout.observations[t] = observation
             rollout.features[t], rollout.targets[t] = features, target
             rollout.stall_rule[t] = stall_rule
             rollout.starts[t], rollout.memory[t] = start, memory
@@ -269,10 +278,41 @@ def loss_weights(stall_rule, stall_weight):
     return torch.where(relieved(stall_rule), stall_weight, 1.0)
 
 
-def train(student, optimiser, rollouts, initial, args, generator):
+def learns_perception(args):
+    return args.perception_learning_rate > 0
+
+
+def perception_parameters(init):
+    """INIT's parameters that its `features` computes with, by name."""
+    return {name: value for name, value in init.named_parameters()
+            if name.startswith(PERCEPTION)}
+
+
+def make_optimiser(student, init, args):
+    """Adam over the student's parameters, and INIT's perception's at their own step size when
+    it learns."""
+    if not learns_perception(args):
+        return torch.optim.Adam(student.parameters(), lr=args.learning_rate)
+    perception = list(perception_parameters(init).values())
+    for parameter in perception:
+        parameter.requires_grad_(True)
+    return torch.optim.Adam([{"params": student.parameters()},
+                             {"params": perception, "lr": args.perception_learning_rate}],
+                            lr=args.learning_rate)
+
+
+def sequence_features(init, observations):
+    """The features of observations [S, B, O] as INIT's perception of the moment sees them."""
+    flat = init.features(observations.flatten(0, 1))
+    return flat.view(observations.shape[0], observations.shape[1], -1)
+
+
+def train(student, init, optimiser, rollouts, initial, args, generator):
     """EPOCHS passes over every sequence of the kept rollouts, the memory restarting at
     `initial` at each episode's start; the mean imitation loss and the mean squared error of
-    the stall readout (0 without one) of the last pass."""
+    the stall readout (0 without one) of the last pass. The features are the recorded ones,
+    or, when the perception learns, its features of the recorded observations."""
+    trained = [parameter for group in optimiser.param_groups for parameter in group["params"]]
     windows = [(r, t, n) for r in range(len(rollouts))
                for t in range(0, args.steps - args.sequence + 1, args.sequence // 2)
                for n in range(args.worlds)]
@@ -283,7 +323,9 @@ def train(student, optimiser, rollouts, initial, args, generator):
             chosen = [windows[i] for i in order[first:first + args.batch]]
             pick = lambda field: torch.stack(  # noqa: E731: [sequence, batch, ...]
                 [getattr(rollouts[r], field)[t:t + args.sequence, n] for r, t, n in chosen], 1)
-            features, targets, starts = pick("features"), pick("targets"), pick("starts")
+            features = (sequence_features(init, pick("observations")) if learns_perception(args)
+                        else pick("features"))
+            targets, starts = pick("targets"), pick("starts")
             stall_rule = pick("stall_rule")
             weights = loss_weights(stall_rule, args.stall_weight)
             memory = torch.stack([rollouts[r].memory[t, n] for r, t, n in chosen])
@@ -300,7 +342,7 @@ def train(student, optimiser, rollouts, initial, args, generator):
             loss, readout_error = loss / args.sequence, readout_error / args.sequence
             optimiser.zero_grad()
             (loss + args.stall_memory * readout_error).backward()
-            torch.nn.utils.clip_grad_norm_(student.parameters(), args.max_grad_norm)
+            torch.nn.utils.clip_grad_norm_(trained, args.max_grad_norm)
             optimiser.step()
             total, batches = total + loss.item(), batches + 1
             readout_total += float(readout_error)
@@ -308,15 +350,21 @@ def train(student, optimiser, rollouts, initial, args, generator):
 
 
 def write_student(init, student, rollout, path):
-    """INIT's file with the student's weights, checked against its own step, then renamed."""
+    """INIT's file with the student's weights (and its perception's, as they are), checked
+    against its own step, then renamed."""
     parameters = dict(init.named_parameters())
     with torch.no_grad():
         for name in student.names:
             parameters[name].copy_(student.weights[name])
         memory = rollout.memory[-1]
-        expected, _ = student.act(rollout.features[-1], memory)
+        expected, _ = student.act(init.features(rollout.last_observations), memory)
     temporary = f"{path}.tmp"
+    learning = [value for value in parameters.values() if value.requires_grad]
+    for value in learning:  # the file's parameters load as INIT's do, not requiring gradients
+        value.requires_grad_(False)
     init.save(temporary)
+    for value in learning:
+        value.requires_grad_(True)
     written = torch.jit.load(temporary)
     action, _ = written.step(rollout.last_observations, memory)
     if not torch.allclose(action, expected, atol=1e-5):
@@ -368,17 +416,20 @@ def run_settings(args):
             if name not in ("resume", "print_config")}
 
 
-def save_state(args, iteration, student, optimiser, generator, rollouts, log):
+def save_state(args, iteration, student, init, optimiser, generator, rollouts, log):
     """The run after `iteration` (0 first), to a temporary file, then renamed."""
     path = state_path(args)
+    perception = ({name: value.detach() for name, value in perception_parameters(init).items()}
+                  if learns_perception(args) else {})
     torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,
-                "student": student.state_dict(), "optimiser": optimiser.state_dict(),
+                "student": student.state_dict(), "perception": perception,
+                "optimiser": optimiser.state_dict(),
                 "generator": generator.get_state(), "rollouts": [vars(r) for r in rollouts],
                 "log": log}, f"{path}.tmp")
     os.replace(f"{path}.tmp", path)
 
 
-def load_state(args, student, optimiser, generator):
+def load_state(args, student, init, optimiser, generator):
     """(iterations done, kept rollouts, iteration log) of the state --resume carries on from."""
     path = state_path(args)
     try:
@@ -393,6 +444,10 @@ def load_state(args, student, optimiser, generator):
         raise BadInput(f"--resume: {path} was written with --{differing[0].replace('_', '-')} "
                        f"{state['settings'].get(differing[0])}, not {getattr(args, differing[0])}")
     student.load_state_dict(state["student"])
+    with torch.no_grad():
+        parameters = perception_parameters(init)
+        for name, value in state["perception"].items():
+            parameters[name].copy_(value)
     optimiser.load_state_dict(state["optimiser"])
     generator.set_state(state["generator"])
     return (state["iterations_done"], [Rollout.restored(fields) for fields in state["rollouts"]],
@@ -415,6 +470,8 @@ def parse(argv):
     parser.add_argument("--sequence", type=int, default=32, help="steps per training sequence")
     parser.add_argument("--batch", type=int, default=128, help="sequences per minibatch")
     parser.add_argument("--learning-rate", type=float, default=3e-4, help="Adam's step size")
+    parser.add_argument("--perception-learning-rate", type=float, default=0.0,
+                        help="the perception's step size (0: it stays as INIT's)")
     parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
     parser.add_argument("--stall-weight", type=float, default=1.0,
                         help="loss weight of the steps a relief steers the teacher")
@@ -442,8 +499,10 @@ def parse(argv):
         value = getattr(args, name)
         if not 0 < value < 1e3:
             raise BadInput(f"--{name.replace('_', '-')} {value}: expected a positive value")
-    if not 0 <= args.stall_memory < 1e3:
-        raise BadInput(f"--stall-memory {args.stall_memory}: expected 0 or a positive value")
+    for name in ("stall_memory", "perception_learning_rate"):
+        value = getattr(args, name)
+        if not 0 <= value < 1e3:
+            raise BadInput(f"--{name.replace('_', '-')} {value}: expected 0 or a positive value")
     if os.path.isdir(args.out):
         raise BadInput(f"--out {args.out}: a folder, not a file name")
     return args
@@ -481,6 +540,9 @@ def load(args):
         student = Student(dict(init.module.named_parameters()), args.stall_memory > 0)
     except BadInput as error:
         raise BadInput(f"{args.init}: {error}")
+    if learns_perception(args) and not perception_parameters(init.module):
+        raise BadInput(f"--perception-learning-rate {args.perception_learning_rate}: "
+                       f"{args.init} has no parameter {PERCEPTION}*")
     return teacher, init.module, student
 
 
@@ -494,9 +556,9 @@ def main(argv):
             return 0
         teacher, init, student = load(args)
         generator = torch.Generator().manual_seed(args.seed)
-        optimiser = torch.optim.Adam(student.parameters(), lr=args.learning_rate)
-        done, rollouts, log = (load_state(args, student, optimiser, generator) if args.resume
-                               else (0, [], []))
+        optimiser = make_optimiser(student, init, args)
+        done, rollouts, log = (load_state(args, student, init, optimiser, generator)
+                               if args.resume else (0, [], []))
         make_out_folder(args)
     except BadInput as error:
         print(f"distill_policy: error: {error}", file=sys.stderr)
@@ -517,7 +579,8 @@ def main(argv):
         rollout, episodes = play(worlds, teacher, init, student, initial, args, iteration)
         rollouts = (rollouts + [rollout])[-args.keep:]
         played = time.monotonic()
-        loss, readout_error = train(student, optimiser, rollouts, initial, args, generator)
+        loss, readout_error = train(student, init, optimiser, rollouts, initial, args,
+                                    generator)
         means = episode_means(episodes)
         relieved_share = (100 * float(relieved(rollout.stall_rule).float().mean())
                           if teacher.has_stall_rule else None)
@@ -526,7 +589,7 @@ def main(argv):
                     "stall_readout_error": readout_error if args.stall_memory else None,
                     "seconds": time.monotonic() - started})
         write_student(init, student, rollouts[-1], args.out)
-        save_state(args, iteration, student, optimiser, generator, rollouts, log)
+        save_state(args, iteration, student, init, optimiser, generator, rollouts, log)
         write_summary(args, log, finished=False)
         playing, training = playing + played - started, training + time.monotonic() - played
         # Training time grows with the rollouts kept: ETA from the seconds per play and per

@@ -1,8 +1,9 @@
 """scripts/distill_policy.py with a tiny recurrent train_ppo policy made here: distilled into
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
 its trap worlds replay scenarios INIT times out in; the steps a teacher's relief steers weigh
---stall-weight, and --stall-memory teaches the memory the teacher's stall rule; STUDENT.pt.json
-records each iteration and the end; --print-config checks the arguments alone; bad input is
+--stall-weight, and --stall-memory teaches the memory the teacher's stall rule; with
+--perception-learning-rate the perception learns too; STUDENT.pt.json records each iteration and
+the end; an interrupted run resumes to the same file; --print-config checks the arguments alone; bad input is
 refused."""
 
 import importlib.util
@@ -221,6 +222,49 @@ def test_the_stall_readout_trains_the_memory_and_is_not_written(recurrent_policy
                            plain_parameters["recurrent_weight_hh"])
 
 
+def perception(policy_file):
+    return {name: value for name, value in torch.jit.load(str(policy_file)).named_parameters()
+            if name.startswith("features_extractor_")}
+
+
+def test_the_perception_learns_at_its_own_step_size_and_only_when_asked(
+        recurrent_policy, held_policy, tmp_path):
+    init = perception(recurrent_policy)
+    assert init, "the recurrent policy has no perception parameter"
+    fixed = run(held_policy, recurrent_policy, "--out", tmp_path / "fixed.pt", *SMALL)
+    learnt = run(held_policy, recurrent_policy, "--out", tmp_path / "learnt.pt",
+                 "--perception-learning-rate", 0.01, *SMALL)
+    assert fixed.returncode == 0 and learnt.returncode == 0, fixed.stderr + learnt.stderr
+    for name, value in perception(tmp_path / "fixed.pt").items():
+        assert torch.equal(value, init[name]), name
+    learnt_perception = perception(tmp_path / "learnt.pt")
+    assert all(not torch.equal(value, init[name]) for name, value in learnt_perception.items())
+    # Written as INIT's are: loaded, no parameter requires a gradient.
+    assert not any(value.requires_grad for value in learnt_perception.values())
+    # The acting layers learnt from the same teacher, but through other features.
+    assert not torch.equal(actions(tmp_path / "learnt.pt", observations()),
+                           actions(tmp_path / "fixed.pt", observations()))
+
+
+def test_the_optimiser_steps_the_perception_at_its_own_rate(recurrent_policy, held_policy):
+    distill = script_module()
+    common = [str(held_policy), str(recurrent_policy), "--out", "s.pt", "--learning-rate", "0.002"]
+    _, init, student = distill.load(distill.parse(common))
+    fixed = distill.make_optimiser(student, init, distill.parse(common))
+    assert [group["lr"] for group in fixed.param_groups] == [0.002]
+    assert fixed.param_groups[0]["params"] == list(student.parameters())
+    args = distill.parse(common + ["--perception-learning-rate", "0.005"])
+    learning = distill.make_optimiser(student, init, args)
+    assert [group["lr"] for group in learning.param_groups] == [0.002, 0.005]
+    perception_parameters = distill.perception_parameters(init)
+    assert all(value.requires_grad for value in perception_parameters.values())
+    assert learning.param_groups[1]["params"] == list(perception_parameters.values())
+    # A sequence's features, computed at once, are each step's.
+    sequence = observations()
+    expected = torch.stack([init.features(step) for step in sequence])
+    torch.testing.assert_close(distill.sequence_features(init, sequence), expected)
+
+
 def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
     result = run(held_policy, recurrent_policy, "--out", tmp_path / "s.pt", "--traps", 1, *SMALL)
     assert result.returncode == 0, result.stderr
@@ -228,14 +272,18 @@ def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
     assert (tmp_path / "s.pt").exists()
 
 
-def test_an_interrupted_run_resumes_to_the_same_file(recurrent_policy, held_policy, tmp_path):
+@pytest.mark.parametrize("learning", [[], ["--perception-learning-rate", 0.01]],
+                         ids=["perception fixed", "perception learning"])
+def test_an_interrupted_run_resumes_to_the_same_file(recurrent_policy, held_policy, tmp_path,
+                                                     learning):
+    options = [*SMALL, *learning]
     whole = run(held_policy, recurrent_policy, "--out", tmp_path / "whole.pt", "--traps", 1,
-                *SMALL)
+                *options)
     assert whole.returncode == 0, whole.stderr
     assert not (tmp_path / "whole.pt.state").exists()
     # Stopped as soon as the second of three iterations is reported, then run again.
     command = [sys.executable, str(SCRIPT), str(held_policy), str(recurrent_policy), "--out",
-               str(tmp_path / "cut.pt"), "--traps", "1", *map(str, SMALL)]
+               str(tmp_path / "cut.pt"), "--traps", "1", *map(str, options)]
     process = subprocess.Popen(command, stdout=subprocess.PIPE, text=True)
     for line in process.stdout:
         if line.startswith("iteration 2/3"):
@@ -287,6 +335,8 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--stall-memory", 1))
     assert "--stall-memory -1.0: expected 0 or a positive value" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--stall-memory", -1))
+    assert "--perception-learning-rate -1.0: expected 0 or a positive value" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--perception-learning-rate", -1))
     assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--worlds", 4, "--traps", 4))
     assert "--resume: " + str(out) + ".state" in refusal(
