@@ -20,6 +20,9 @@ encoder and extractor, `features_extractor_*`) stays as it is, as a locked encod
    start from the memory the student had there, for EPOCHS passes. The loss is the squared
    error between its action mean and the teacher's action, except beyond a bound the teacher
    reached: a mean past +1 where the teacher acted +1 is not an error (actions are clipped).
+   With --imitation-loss absolute, the absolute error instead: where the teacher's actions in
+   like states split between two ways (one member's or its relief's), the squared error's
+   best answer is their average, the absolute error's the way most of them take.
    With --stall-weight W, the steps a relief steers the teacher (an ensemble_policy teacher
    with a stall rule, from the episode's first stall on) weigh W times the others: they are few,
    and the student must tell a second stall from a first by its memory alone. With
@@ -134,13 +137,17 @@ class Student(torch.nn.Module):
         return torch.clamp(self.mean(features, memory), -1.0, 1.0), memory
 
 
-def imitation_loss(mean, target, weights):
-    """Squared error of the action mean, none past a bound the teacher's action sits on, each
-    row weighed by `weights` [B] (weights of 1 give the plain mean to the bit)."""
+IMITATION_LOSSES = ("squared", "absolute")  # --imitation-loss, the first the default
+
+
+def imitation_loss(mean, target, weights, kind="squared"):
+    """Squared (or absolute) error of the action mean, none past a bound the teacher's action
+    sits on, each row weighed by `weights` [B] (weights of 1 give the plain mean to the bit)."""
     error = mean - target
     error = torch.where(target >= 1.0, torch.clamp(error, max=0.0), error)
     error = torch.where(target <= -1.0, torch.clamp(error, min=0.0), error)
-    return (error * error * weights[:, None]).mean()
+    penalty = error * error if kind == "squared" else error.abs()
+    return (penalty * weights[:, None]).mean()
 
 
 class Rollout:
@@ -335,7 +342,7 @@ def train(student, init, optimiser, rollouts, initial, args, generator):
                     memory = torch.where(starts[j][:, None], initial, memory)
                 memory = student.remember(features[j], memory)
                 loss = loss + imitation_loss(student.mean(features[j], memory), targets[j],
-                                             weights[j])
+                                             weights[j], args.imitation_loss)
                 if student.stall_readout is not None:
                     error = student.stall_readout(memory) - stall_rule[j]
                     readout_error = readout_error + (error * error).mean()
@@ -473,6 +480,9 @@ def parse(argv):
     parser.add_argument("--perception-learning-rate", type=float, default=0.0,
                         help="the perception's step size (0: it stays as INIT's)")
     parser.add_argument("--max-grad-norm", type=float, default=0.5, help="gradient clip")
+    parser.add_argument("--imitation-loss", choices=IMITATION_LOSSES,
+                        default=IMITATION_LOSSES[0],
+                        help="the error of the student's action mean to the teacher's action")
     parser.add_argument("--stall-weight", type=float, default=1.0,
                         help="loss weight of the steps a relief steers the teacher")
     parser.add_argument("--stall-memory", type=float, default=0.0,

@@ -2,9 +2,9 @@
 itself nothing changes; distilled from a policy that holds one action, the student learns it;
 its trap worlds replay scenarios INIT times out in; the steps a teacher's relief steers weigh
 --stall-weight, and --stall-memory teaches the memory the teacher's stall rule; with
---perception-learning-rate the perception learns too; STUDENT.pt.json records each iteration and
-the end; an interrupted run resumes to the same file; --print-config checks the arguments alone; bad input is
-refused."""
+--perception-learning-rate the perception learns too; --imitation-loss absolute learns the
+absolute error; STUDENT.pt.json records each iteration and the end; an interrupted run resumes
+to the same file; --print-config checks the arguments alone; bad input is refused."""
 
 import importlib.util
 import json
@@ -161,6 +161,30 @@ def test_the_loss_weighs_each_row():
     mean, target = torch.zeros(2, 2), torch.tensor([[0.5, 0.0], [0.0, -0.5]])
     assert loss(mean, target, torch.ones(2)).item() == 0.125  # (0.25 + 0.25) / 4
     assert loss(mean, target, torch.tensor([1.0, 3.0])).item() == 0.25  # (0.25 + 0.75) / 4
+    assert loss(mean, target, torch.ones(2), "absolute").item() == 0.25  # (0.5 + 0.5) / 4
+    assert loss(mean, target, torch.tensor([1.0, 3.0]), "absolute").item() == 0.5  # (0.5+1.5)/4
+    # Past a bound the teacher sits on, neither counts an error.
+    beyond, bound = torch.tensor([[1.5, -2.0]]), torch.tensor([[1.0, -1.0]])
+    assert loss(beyond, bound, torch.ones(1)).item() == 0.0
+    assert loss(beyond, bound, torch.ones(1), "absolute").item() == 0.0
+
+
+def test_the_absolute_loss_trains_toward_the_action_most_of_the_teachers_take():
+    # One state, the teacher's rudder +0.5 in 3 of 4 rows and -0.5 in the other: the squared
+    # error's answer is their mean (+0.25), the absolute error's the majority's (+0.5).
+    loss = script_module().imitation_loss
+    target = torch.tensor([[0.0, 0.5], [0.0, 0.5], [0.0, 0.5], [0.0, -0.5]])
+    answers = {}
+    for kind in ("squared", "absolute"):
+        mean = torch.zeros(1, 2, requires_grad=True)
+        optimiser = torch.optim.Adam([mean], lr=0.01)
+        for _ in range(500):
+            optimiser.zero_grad()
+            loss(mean.expand(4, 2), target, torch.ones(4), kind).backward()
+            optimiser.step()
+        answers[kind] = mean[0, 1].item()
+    assert answers["squared"] == pytest.approx(0.25, abs=0.02)
+    assert answers["absolute"] == pytest.approx(0.5, abs=0.02)
 
 
 def test_a_rollout_records_the_teachers_stall_rule_and_weighs_its_reliefs(recurrent_policy,
@@ -265,6 +289,24 @@ def test_the_optimiser_steps_the_perception_at_its_own_rate(recurrent_policy, he
     torch.testing.assert_close(distill.sequence_features(init, sequence), expected)
 
 
+def test_an_absolute_loss_run_learns_the_teachers_action(recurrent_policy, held_policy,
+                                                        tmp_path):
+    result = run(held_policy, recurrent_policy, "--out", tmp_path / "a.pt", "--learning-rate",
+                 0.01, "--imitation-loss", "absolute", *SMALL)
+    assert result.returncode == 0, result.stderr
+    first, *_, last = losses(result.stdout)
+    assert last < first / 2, result.stdout
+    held = torch.tensor([0.3, -0.2])
+    before = (actions(recurrent_policy, observations()) - held).abs().mean()
+    after = (actions(tmp_path / "a.pt", observations()) - held).abs().mean()
+    assert after < before / 2, (before, after)
+    squared = run(held_policy, recurrent_policy, "--out", tmp_path / "s.pt", "--learning-rate",
+                  0.01, *SMALL)
+    assert squared.returncode == 0, squared.stderr
+    assert not torch.equal(actions(tmp_path / "a.pt", observations()),
+                           actions(tmp_path / "s.pt", observations()))
+
+
 def test_a_run_with_traps_reports_them(recurrent_policy, held_policy, tmp_path):
     result = run(held_policy, recurrent_policy, "--out", tmp_path / "s.pt", "--traps", 1, *SMALL)
     assert result.returncode == 0, result.stderr
@@ -335,6 +377,8 @@ def test_bad_input_is_refused_before_any_work(recurrent_policy, held_policy, tmp
         run(held_policy, recurrent_policy, "--out", out, "--stall-memory", 1))
     assert "--stall-memory -1.0: expected 0 or a positive value" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--stall-memory", -1))
+    assert "argument --imitation-loss: invalid choice: 'huber'" in refusal(
+        run(held_policy, recurrent_policy, "--out", out, "--imitation-loss", "huber"))
     assert "--perception-learning-rate -1.0: expected 0 or a positive value" in refusal(
         run(held_policy, recurrent_policy, "--out", out, "--perception-learning-rate", -1))
     assert "--traps 4: expected 0 to --worlds - 1 (3)" in refusal(
