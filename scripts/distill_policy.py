@@ -45,9 +45,9 @@ the same seed and thread count give the same file. After every iteration the run
 student, a perception that learns, Adam's moments, the kept rollouts, the sequence order's
 generator) is written to STUDENT.pt.state (a temporary file, then renamed; removed at the
 end): the same command with --resume carries on after the last iteration written and ends with
-the uninterrupted run's file, byte for byte. --out's folder is made if missing. --print-config checks the arguments
-(not the files), prints the run's settings and exits. Bad input: one line naming the argument
-or file, exit status 2.
+the uninterrupted run's file, byte for byte. --out's folder is made if missing. --print-config
+checks the arguments (not the files), prints the run's settings and exits. Bad input: one line
+naming the argument or file, exit status 2.
 """
 
 import argparse
