@@ -42,7 +42,7 @@ encoder and extractor, `features_extractor_*`) stays as it is, as a locked encod
 
 Everything random follows --seed (the worlds' episodes and the order of the sequences), so
 the same seed and thread count give the same file. After every iteration the run's state (the
-student, a perception that learns, Adam's moments, the kept rollouts, the sequence order's
+student, its perception, Adam's moments, the kept rollouts, the sequence order's
 generator) is written to STUDENT.pt.state (a temporary file, then renamed; removed at the
 end): the same command with --resume carries on after the last iteration written and ends with
 the uninterrupted run's file, byte for byte. --out's folder is made if missing. --print-config
@@ -426,8 +426,7 @@ def run_settings(args):
 def save_state(args, iteration, student, init, optimiser, generator, rollouts, log):
     """The run after `iteration` (0 first), to a temporary file, then renamed."""
     path = state_path(args)
-    perception = ({name: value.detach() for name, value in perception_parameters(init).items()}
-                  if learns_perception(args) else {})
+    perception = {name: value.detach() for name, value in perception_parameters(init).items()}
     torch.save({"settings": run_settings(args), "iterations_done": iteration + 1,
                 "student": student.state_dict(), "perception": perception,
                 "optimiser": optimiser.state_dict(),
