@@ -70,36 +70,8 @@ torch::jit::IValue RequireAttribute(const torch::jit::Module& script, const std:
   return script.attr(name);
 }
 
-// The tensor `name` of an encoder file, which must have the shape the encoder built from the
-// file's attributes expects; `file` names the file in errors.
-torch::Tensor StoredParameter(const torch::jit::Module& script, const std::string& name,
-                              at::IntArrayRef expected_shape, const VaeEncoderOptions& options,
-                              const std::string& file) {
-  if (!script.hasattr(name) || !script.attr(name).isTensor()) {
-    throw UserError(file + " has no parameter '" + name + "'");
-  }
-  torch::Tensor stored = script.attr(name).toTensor();
-  if (stored.sizes() != expected_shape) {
-    std::ostringstream message;
-    message << file << ": parameter '" << name << "' has shape " << stored.sizes() << ", expected "
-            << expected_shape << " for a " << VaeArchitectureName(options.architecture)
-            << " encoder with latent_dims " << options.latent_dims;
-    throw UserError(message.str());
-  }
-  if (!torch::isfinite(stored).all().item<bool>()) {
-    throw UserError(file + ": parameter '" + name + "' holds NaN or infinite values");
-  }
-  return stored;
-}
-
 torch::jit::Module LoadEncoderScript(const std::filesystem::path& path) {
-  const std::string file = EncoderFileName(path);
-  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
-  try {
-    return torch::jit::load(path.string(), torch::kCPU);
-  } catch (const std::exception&) {
-    throw UserError(file + " is not a TorchScript file");
-  }
+  return LoadScript(path, EncoderFileName(path));
 }
 
 }  // namespace
@@ -170,8 +142,10 @@ VaeEncoder LoadVaeEncoder(const std::filesystem::path& path) {
   VaeEncoder encoder(options);
   torch::NoGradGuard no_grad;
   for (auto& parameter : encoder->named_parameters()) {
-    parameter.value().copy_(StoredParameter(script, ScriptedParameterName(parameter.key()),
-                                            parameter.value().sizes(), options, file));
+    parameter.value().copy_(StoredParameter(
+        script, ScriptedParameterName(parameter.key()), parameter.value().sizes(), file,
+        " for a " + VaeArchitectureName(options.architecture) + " encoder with latent_dims " +
+            std::to_string(options.latent_dims)));
   }
   return encoder;
 }

@@ -1,5 +1,7 @@
 #include "models/torchscript_source.h"
 
+#include <sstream>
+
 #include "src/atomic_file.h"
 #include "src/error.h"
 
@@ -51,6 +53,34 @@ void RegisterParameters(const torch::nn::Module& module, torch::jit::Module& scr
                                                             /*non_blocking=*/false, /*copy=*/true),
                               /*is_buffer=*/false);
   }
+}
+
+torch::jit::Module LoadScript(const std::filesystem::path& path, const std::string& file) {
+  if (!std::filesystem::is_regular_file(path)) throw UserError(file + " does not exist");
+  try {
+    return torch::jit::load(path.string(), torch::kCPU);
+  } catch (const std::exception&) {
+    throw UserError(file + " is not a TorchScript file");
+  }
+}
+
+torch::Tensor StoredParameter(const torch::jit::Module& script, const std::string& name,
+                              at::IntArrayRef expected_shape, const std::string& file,
+                              const std::string& shape_context) {
+  if (!script.hasattr(name) || !script.attr(name).isTensor()) {
+    throw UserError(file + " has no parameter '" + name + "'");
+  }
+  torch::Tensor stored = script.attr(name).toTensor();
+  if (stored.sizes() != expected_shape) {
+    std::ostringstream message;
+    message << file << ": parameter '" << name << "' has shape " << stored.sizes() << ", expected "
+            << expected_shape << shape_context;
+    throw UserError(message.str());
+  }
+  if (!torch::isfinite(stored).all().item<bool>()) {
+    throw UserError(file + ": parameter '" + name + "' holds NaN or infinite values");
+  }
+  return stored;
 }
 
 void SaveScript(const torch::jit::Module& script, const std::filesystem::path& path) {

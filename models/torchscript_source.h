@@ -1,6 +1,7 @@
 // The building blocks of the TorchScript exports (models/torchscript_export.h for the VAE,
-// models/policy_export.h for the policy): the C++ module's parameters copied into a
-// torch::jit::Module, and TorchScript source statements that use them. A parameter `a.b.c` of the
+// models/policy_export.h for the policy) and of reading their weights back: the C++ module's
+// parameters copied into a torch::jit::Module and out of one, and TorchScript source statements
+// that use them. A parameter `a.b.c` of the
 // C++ module is the attribute `a_b_c` of the scripted one. Statements work on the variable `h`.
 #pragma once
 
@@ -32,6 +33,15 @@ std::string ConvTranspose1dSource(const std::string& module, std::int64_t stride
 
 /// Copies every parameter of `module` into `script` as a float32 CPU tensor.
 void RegisterParameters(const torch::nn::Module& module, torch::jit::Module& script);
+/// The TorchScript file at `path`; a missing or unreadable one is a UserError naming `file` (a
+/// description of the file and its path, "encoder file 'x.pt'").
+torch::jit::Module LoadScript(const std::filesystem::path& path, const std::string& file);
+/// The parameter `name` (a scripted name) of `script`, which must be a tensor of
+/// `expected_shape` holding finite values; else a UserError naming `file` and `name`, and for a
+/// wrong shape both shapes followed by `shape_context` (" for a shallow encoder", say).
+torch::Tensor StoredParameter(const torch::jit::Module& script, const std::string& name,
+                              at::IntArrayRef expected_shape, const std::string& file,
+                              const std::string& shape_context);
 /// Writes `script` to `path` through WriteFileAtomically (parent folders created, no
 /// half-written file on failure). A path that cannot be written is a UserError naming it.
 void SaveScript(const torch::jit::Module& script, const std::filesystem::path& path);
