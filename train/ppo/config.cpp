@@ -146,6 +146,14 @@ void RequireMemoryForItsTraining(PpoRunOptions& options) {
   }
 }
 
+// A start from a policy file, whose navigation values were never normalised by this run's map.
+void RequireRawNavigationForInitPolicy(PpoRunOptions& options) {
+  if (!options.init_policy.empty() && options.ppo.normalize_navigation) {
+    throw UserError("policy.init " + options.init_policy.string() +
+                    ": its policy saw raw navigation values; leave ppo.normalize_navigation false");
+  }
+}
+
 // An expected clipped action for a policy whose actions are squashed, not clipped.
 void RequireClippedActionsForDeterministicStd(PpoRunOptions& options) {
   if (options.model.squash_actions && options.model.smooths_deterministic_action()) {
@@ -263,6 +271,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "policy.hidden_sizes", [](Run & o) -> auto& { return o.model.hidden_sizes; },
           "hidden layers of the actor and critic MLPs (separate, Tanh)",
           TextCodec<std::vector<std::int64_t>>{LayerSizesText, ParseLayerSizes})
+      .Text(
+          "policy.init", [](Run & o) -> auto& { return o.init_policy; },
+          "policy.pt (of train_ppo or distill_policy.py, of this run's architecture and "
+          "observations) whose weights the run starts from; empty: its own initialisation")
       .Number(
           "policy.log_std_init", [](Run & o) -> auto& { return o.model.log_std_init; },
           "initial log std of the action distribution (std e^-10 to e^2)", -10.0, 2.0)
@@ -355,6 +367,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireWholeSequences)
       .Then(RequireMemoryForItsTraining)
       .Then(RequireClippedActionsForDeterministicStd)
+      .Then(RequireRawNavigationForInitPolicy)
       .Then(DeriveModelSettings);
   return binding;
 }

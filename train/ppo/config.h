@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct PpoRunOptions {
   PpoOptions ppo;
   /// Its seed follows from ppo.seed.
   ActorCriticOptions model;
+  /// A policy.pt (train_ppo's, or a student of distill_policy.py) whose weights the run starts
+  /// from instead of its own initialisation; empty: none. Adam's moments and every running
+  /// statistic still start afresh.
+  std::filesystem::path init_policy;
   /// Log closeness, as in the authors' environment code: the ablation (studies/ablation.yaml)
   /// found it is what their agents were trained with, and what closes the gap to them.
   EnvironmentConfig env = AuthorsTrainingEnvironment();

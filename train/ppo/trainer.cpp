@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/policy_export.h"
+#include "models/policy_import.h"
 #include "src/atomic_file.h"
 #include "src/cli.h"
 #include "src/error.h"
@@ -75,7 +76,7 @@ class PpoTrainer {
         run_dir_(std::move(run_dir)),
         options_(options.ppo),
         observation_settings_(ObservationSettingsOf(options.env)),
-        model_(ModelOptions(options.model, resume)),
+        model_(StartingModel(options, resume)),
         updater_(model_, options_),
         generator_(at::make_generator<at::CPUGeneratorImpl>(DeriveSeed(options_.seed, "ppo"))),
         rollout_start_(resume ? LoadCheckpoint(run_dir_, *model_, updater_.optimizer())
@@ -251,9 +252,11 @@ class PpoTrainer {
     spdlog::info("step {}: the curriculum's second worlds (world2.*) start", counters_.global_step);
   }
 
-  static ActorCriticOptions ModelOptions(ActorCriticOptions options, bool resume) {
-    if (resume) options.extractor.encoder.clear();  // the weights come from the checkpoint
-    return options;
+  static ActorCritic StartingModel(const PpoRunOptions& options, bool resume) {
+    if (!resume) return InitialPolicy(options);
+    ActorCriticOptions model_options = options.model;
+    model_options.extractor.encoder.clear();  // the weights come from the checkpoint
+    return ActorCritic(model_options);
   }
 
   nlohmann::json resolved_config_;
@@ -278,6 +281,14 @@ class PpoTrainer {
 
 }  // namespace
 
+ActorCritic InitialPolicy(const PpoRunOptions& options) {
+  ActorCritic model(options.model);
+  if (!options.init_policy.empty()) {
+    LoadPolicyWeights(options.init_policy, ObservationSettingsOf(options.env), *model);
+  }
+  return model;
+}
+
 PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resolved_config,
                        const std::filesystem::path& run_dir, bool resume) {
   PpoTrainer trainer(options, resolved_config, run_dir, resume);  // checks what it resumes
@@ -290,6 +301,9 @@ PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resol
   spdlog::info("{} {} steps (extractor {}, {}) in {}", resume ? "resuming" : "training",
                options.ppo.total_steps, ExtractorKindName(extractor.kind), training_mode,
                run_dir.string());
+  if (!resume && !options.init_policy.empty()) {
+    spdlog::info("starting from the weights of {}", options.init_policy.string());
+  }
   return trainer.Run();
 }
 

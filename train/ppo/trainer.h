@@ -30,6 +30,11 @@ struct PpoRunSummary {
   RollingEpisodeStats rolling;
 };
 
+/// The policy a new run of `options` starts from: its own initialisation (a VAE extractor's
+/// pre-trained encoder loaded), or policy.init's weights. A bad encoder or policy file is a
+/// UserError naming it.
+ActorCritic InitialPolicy(const PpoRunOptions& options);
+
 /// Trains the agent configured by `options` in run_dir, from scratch or resuming from its
 /// checkpoint, and writes run_dir/summary.json, which records `resolved_config` (Config::ToJson of
 /// the configuration the options were read from). Logs what it starts once the files it resumes

@@ -111,10 +111,11 @@ int Main(int argc, char** argv) {
   }
   const colav::Config config = config_flags.Resolve();
   const colav::PpoRunOptions options = binding.Read(config);
-  // A bad extractor setting or encoder file fails here, before the run folder is touched.
+  // A bad extractor setting, encoder or policy.init file fails here, before the run folder is
+  // touched.
   if (resume.empty()) {
     colav::CheckEncoderObservationSettings(options);
-    colav::ActorCritic(options.model);
+    colav::InitialPolicy(options);
   }
 
   const colav::RunFolder run = colav::RunFolder::Create(run_path);
