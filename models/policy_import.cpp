@@ -1,6 +1,7 @@
 #include "models/policy_import.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "models/observation_settings_record.h"
@@ -44,19 +45,21 @@ void LoadPolicyWeights(const std::filesystem::path& path, const ObservationSetti
   const torch::jit::Module script = LoadScript(path, file);
   RequireSameInputs(script, file, settings, model);
   const std::string context = " by this run's policy (policy.*, extractor.*)";
-  std::vector<torch::Tensor> stored;
+  // Every parameter is checked before any is copied, so that a refused file changes nothing.
+  std::vector<std::pair<torch::Tensor, torch::Tensor>> destination_and_stored;
   for (const auto& parameter : model.named_parameters()) {
-    stored.push_back(StoredParameter(script, ScriptedParameterName(parameter.key()),
-                                     parameter.value().sizes(), file, context));
+    destination_and_stored.emplace_back(
+        parameter.value(), StoredParameter(script, ScriptedParameterName(parameter.key()),
+                                           parameter.value().sizes(), file, context));
   }
   const std::size_t file_parameters = script.named_parameters().size();
-  if (file_parameters != stored.size()) {
+  if (file_parameters != destination_and_stored.size()) {
     throw UserError(file + " has " + std::to_string(file_parameters) + " parameters, this run's " +
-                    "policy " + std::to_string(stored.size()) + " (policy.*, extractor.*)");
+                    "policy " + std::to_string(destination_and_stored.size()) +
+                    " (policy.*, extractor.*)");
   }
   torch::NoGradGuard no_grad;
-  std::size_t i = 0;
-  for (auto& parameter : model.named_parameters()) parameter.value().copy_(stored[i++]);
+  for (auto& [destination, stored] : destination_and_stored) destination.copy_(stored);
 }
 
 }  // namespace colav

@@ -1,8 +1,8 @@
 // The building blocks of the TorchScript exports (models/torchscript_export.h for the VAE,
 // models/policy_export.h for the policy) and of reading their weights back: the C++ module's
 // parameters copied into a torch::jit::Module and out of one, and TorchScript source statements
-// that use them. A parameter `a.b.c` of the
-// C++ module is the attribute `a_b_c` of the scripted one. Statements work on the variable `h`.
+// that use them. A parameter `a.b.c` of the C++ module is the attribute `a_b_c` of the scripted
+// one. Statements work on the variable `h`.
 #pragma once
 
 #include <torch/script.h>

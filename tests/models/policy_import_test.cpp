@@ -58,7 +58,8 @@ class PolicyImportTest : public testing::Test {
     return path;
   }
 
-  // The message of loading `path` into a fresh SmallPolicy(2), which must stay as it was.
+  // The message of loading `path` into a fresh policy of `options` (SmallPolicy(2) unless
+  // given), which must stay as it was.
   std::string RefusalOf(const std::filesystem::path& path,
                         ActorCriticOptions options = SmallPolicy(2),
                         const ObservationSettings& settings = {}) {
