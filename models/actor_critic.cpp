@@ -149,4 +149,15 @@ std::vector<torch::Tensor> ActorCriticImpl::TrainableParameters() const {
   return trainable;
 }
 
+std::vector<torch::Tensor> ActorCriticImpl::CriticParameters() const {
+  std::vector<torch::Tensor> critic = mlp_extractor_->value_net->parameters();
+  for (const torch::Tensor& parameter : value_net_->parameters()) critic.push_back(parameter);
+  if (critic_recurrent_) {
+    for (const torch::Tensor& parameter : critic_recurrent_->parameters()) {
+      critic.push_back(parameter);
+    }
+  }
+  return critic;
+}
+
 }  // namespace colav

@@ -99,6 +99,9 @@ class ActorCriticImpl : public torch::nn::Module {
 
   /// The parameters the optimiser updates: all but those of a locked encoder, in module order.
   std::vector<torch::Tensor> TrainableParameters() const;
+  /// The parameters only the critic reads: its trunk, its value head and its own memory (if
+  /// any). Everything else shapes the actions.
+  std::vector<torch::Tensor> CriticParameters() const;
 
   const ActorCriticOptions& options() const { return options_; }
   FeatureExtractor& features_extractor() { return features_extractor_; }

@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "env/environment_spec.h"
 #include "models/torchscript_export.h"
@@ -203,6 +206,40 @@ TEST(ActorCriticTest, SeparateCriticMemoryKeepsEachLossOnItsOwnGru) {
   mean.sum().backward();
   EXPECT_GT(gradient_sum(separate->recurrent()), 0.0f);
   EXPECT_EQ(gradient_sum(separate->critic_recurrent()), 0.0f);
+}
+
+// The critic's own parameters are exactly those no action depends on: the action mean's gradient
+// reaches every other parameter (the log std aside, which the mean does not read) and none of them.
+TEST(ActorCriticTest, CriticParametersAreThoseNoActionReads) {
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  options.separate_critic_memory = true;
+  ActorCritic model(options);
+  const std::vector<torch::Tensor> critic = model->CriticParameters();
+  const auto is_critics = [&](const torch::Tensor& parameter) {
+    return std::any_of(critic.begin(), critic.end(),
+                       [&](const torch::Tensor& c) { return c.is_same(parameter); });
+  };
+  std::vector<std::string> critic_names;
+  for (const auto& named : model->named_parameters()) {
+    if (is_critics(named.value())) critic_names.push_back(named.key());
+  }
+  EXPECT_EQ(critic_names, (std::vector<std::string>{
+                              "critic_recurrent.weight_ih", "critic_recurrent.weight_hh",
+                              "critic_recurrent.bias_ih", "critic_recurrent.bias_hh",
+                              "mlp_extractor.value_net.0.weight", "mlp_extractor.value_net.0.bias",
+                              "mlp_extractor.value_net.2.weight", "mlp_extractor.value_net.2.bias",
+                              "mlp_extractor.value_net.4.weight", "mlp_extractor.value_net.4.bias",
+                              "value_net.weight", "value_net.bias"}));
+  torch::manual_seed(4);
+  const auto [mean, value, next] =
+      model->forward_recurrent(torch::rand({3, kObservationSize}), torch::randn({3, 8}));
+  mean.sum().backward();
+  for (const auto& named : model->named_parameters()) {
+    const torch::Tensor gradient = named.value().grad();
+    const bool reached = gradient.defined() && gradient.abs().sum().item<float>() > 0;
+    EXPECT_EQ(reached, !is_critics(named.value()) && named.key() != "log_std") << named.key();
+  }
 }
 
 }  // namespace

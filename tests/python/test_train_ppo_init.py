@@ -1,11 +1,14 @@
 """train_ppo's policy.init: a run starts from a policy file's weights (at learning rate 0 it
 ends with them, bit for bit, where its own initialisation differs), learns on from them, and
-records the file in its configuration."""
+records the file in its configuration; with ppo.critic_warmup_steps its first updates train the
+critic alone."""
+
+import subprocess
 
 import pytest
 import torch
 
-from conftest import run_program
+from conftest import BIN_DIR, run_program
 
 TINY = ["--steps", 128, "--envs", 2, "--set", "ppo.n_steps=64", "--set", "ppo.batch_size=64",
         "--set", "train.env_threads=1", "--set", "policy.recurrent_size=4"]
@@ -50,3 +53,35 @@ def test_a_run_learns_on_from_the_files_weights(start, tmp_path):
     for name in ("mlp_extractor_policy_net_0_weight", "recurrent_weight_hh", "action_net_weight"):
         moved = (started[name] - weights(start)[name]).abs().max()
         assert 0 < moved < 0.02, name
+
+
+def test_a_critic_warmup_holds_the_actor_then_trains_it(start, tmp_path):
+    """Three rollouts of 128 steps, the first a warm-up. The checkpoint at step 256 (written while
+    the second rollout is collected, so after the first update only) keeps every parameter the
+    actions read from the file, bit for bit, and has moved the critic's own; the later updates
+    move the actor too."""
+    warm = ["--steps", 384, "--set", f"policy.init={start}", "--set", "ppo.critic_warmup_steps=128",
+            "--set", "train.checkpoint_interval=128"]
+    final = weights(train(tmp_path / "warm", *warm))
+    after_warmup = weights(tmp_path / "warm" / "checkpoints" / "policy_256.pt")
+    initial = weights(start)
+    critic = ("mlp_extractor_value_net", "value_net")
+    for name in initial:
+        if name.startswith(critic):
+            assert not torch.equal(after_warmup[name], initial[name]), name
+        else:
+            assert torch.equal(after_warmup[name], initial[name]), name
+    assert not torch.equal(final["action_net_weight"], initial["action_net_weight"])
+    assert not torch.equal(final["recurrent_weight_hh"], initial["recurrent_weight_hh"])
+    log = (tmp_path / "warm" / "train_ppo.log").read_text()
+    assert "the critic trains alone, the actor held, until step 128" in log
+    assert "step 256: the critic's warm-up is over" in log
+
+
+def test_a_warmup_as_long_as_the_run_is_refused(tmp_path):
+    result = subprocess.run([str(BIN_DIR / "train_ppo"), "--out", str(tmp_path / "run"),
+                             *map(str, TINY), "--set", "ppo.critic_warmup_steps=128"],
+                            capture_output=True, text=True)
+    assert result.returncode == 2
+    assert "ppo.critic_warmup_steps = 128 covers the whole run" in result.stderr
+    assert not (tmp_path / "run").exists()

@@ -163,6 +163,16 @@ void RequireClippedActionsForDeterministicStd(PpoRunOptions& options) {
   }
 }
 
+// A critic warm-up under which the actor would never train.
+void RequireActorAfterWarmup(PpoRunOptions& options) {
+  if (options.ppo.critic_warmup_steps >= options.ppo.total_steps) {
+    throw UserError(fmt::format(
+        "ppo.critic_warmup_steps = {} covers the whole run (ppo.total_steps {}): the actor would "
+        "never train",
+        options.ppo.critic_warmup_steps, options.ppo.total_steps));
+  }
+}
+
 // A curriculum whose second stage no world would play.
 void RequireSecondWorldsShare(PpoRunOptions& options) {
   if (options.second_worlds_from_step > 0 &&
@@ -261,6 +271,12 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
              "ppo.total_steps (set before each update, SB3's progress remaining)",
              TextCodec<LearningRateSchedule>{LearningRateScheduleName, ParseLearningRateSchedule},
              {"constant", "linear"})
+      .Number(
+          "ppo.critic_warmup_steps", [](Run & o) -> auto& { return o.ppo.critic_warmup_steps; },
+          "updates of rollouts ending at or before this step train the critic alone, the actor "
+          "(its trunk, head, log std, extractor and memory) held; Adam restarts when the actor "
+          "joins. For runs from policy.init; 0: none",
+          0, kMaxSteps)
       .Number(
           "ppo.adam_eps", [](Run & o) -> auto& { return o.ppo.adam.eps; }, "Adam epsilon", 0.0, 1.0)
       .Bool(
@@ -362,6 +378,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "or after this step, then world2.*; 0: world2.* from the start",
           0, kMaxSteps)
       .Then(RequireSecondWorldsShare)
+      .Then(RequireActorAfterWarmup)
       .Then(RequireEncoder)
       .Then(RequireRolloutSizes)
       .Then(RequireWholeSequences)

@@ -44,6 +44,9 @@ struct PpoOptions {
   AdamOptions adam;
   /// How adam.learning_rate moves over the run.
   LearningRateSchedule learning_rate_schedule = LearningRateSchedule::kConstant;
+  /// The updates of rollouts ending at or before this step train the critic alone, the actor
+  /// held (critic_warmup.h): for a run that starts from a trained policy. 0: none (the paper's).
+  std::int64_t critic_warmup_steps = 0;
   std::int64_t checkpoint_interval = 30'000;  ///< steps between checkpoints
   bool keep_checkpoints = true;               ///< also keep checkpoints/policy_<step>.pt
   std::uint64_t seed = 0;

@@ -15,6 +15,7 @@
 #include "src/progress.h"
 #include "src/seeding.h"
 #include "src/threads/thread_pool.h"
+#include "train/ppo/critic_warmup.h"
 #include "train/ppo/learning_rate_schedule.h"
 #include "train/ppo/rollout.h"
 #include "train/ppo/update.h"
@@ -150,6 +151,7 @@ class PpoTrainer {
       if (!complete) break;  // stopped in the middle of the rollout
       const Clock::time_point update_start = Clock::now();
       buffer_.ComputeReturnsAndAdvantages(options_.gamma, options_.gae_lambda);
+      SetUpdatePhase();
       updater_.optimizer().set_learning_rate(
           ScheduledLearningRate(options_.learning_rate_schedule, options_.adam.learning_rate,
                                 counters_.global_step, options_.total_steps));
@@ -196,6 +198,20 @@ class PpoTrainer {
     summary_.finished = true;
     summary_.rolling = logs_.Rolling();
     return summary_;
+  }
+
+  // The critic warm-up's phase of the update that follows the rollout just collected.
+  void SetUpdatePhase() {
+    const UpdatePhase phase = UpdatePhaseAt(
+        counters_.global_step, static_cast<std::int64_t>(options_.n_envs) * options_.n_steps,
+        options_.critic_warmup_steps);
+    updater_.set_actor_held(phase == UpdatePhase::kCriticOnly);
+    if (phase != UpdatePhase::kActorJoins) return;
+    updater_.RestartOptimizer();
+    spdlog::info(
+        "step {}: the critic's warm-up is over (ppo.critic_warmup_steps {}): the actor "
+        "trains too, Adam restarted",
+        counters_.global_step, options_.critic_warmup_steps);
   }
 
   static KeptLogRows KeptRows(const TrainingCounters& counters) {
@@ -303,6 +319,10 @@ PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resol
                run_dir.string());
   if (!resume && !options.init_policy.empty()) {
     spdlog::info("starting from the weights of {}", options.init_policy.string());
+  }
+  if (options.ppo.critic_warmup_steps > 0) {
+    spdlog::info("the critic trains alone, the actor held, until step {} (ppo.critic_warmup_steps)",
+                 options.ppo.critic_warmup_steps);
   }
   return trainer.Run();
 }

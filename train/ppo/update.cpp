@@ -21,6 +21,17 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
       d_value_(options.batch_size) {
   // The model decides the action distribution, and with it the entropy the bonus rewards.
   options_.loss.squashed_actions = policy_.squash_actions();
+  const std::vector<torch::Tensor> critic = model->CriticParameters();
+  for (std::size_t i = 0; i < policy_.parameters().size(); ++i) {
+    const bool critics = std::any_of(critic.begin(), critic.end(), [&](const torch::Tensor& p) {
+      return p.is_same(policy_.parameters()[i]);
+    });
+    if (!critics) actor_gradients_.push_back(policy_.gradients()[i]);
+  }
+}
+
+void PpoUpdater::ZeroActorGradients() {
+  for (const torch::Tensor& gradient : actor_gradients_) gradient.zero_();
 }
 
 PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B) {
@@ -95,6 +106,7 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
                                std::to_string(n_updates_ + epoch + 1));
       }
       policy_.Backward(d_mean_.data(), d_value_.data(), d_log_std, B);
+      if (actor_held_) ZeroActorGradients();
       const double norm = GradientNorm(policy_.gradients());
       optimizer_.Step(policy_.gradients(), ClipCoefficient(norm, options_.max_grad_norm));
 

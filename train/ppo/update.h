@@ -41,6 +41,14 @@ class PpoUpdater {
   /// TrainingDiverged on a non-finite loss or parameter.
   UpdateStats Update(const RolloutBuffer& buffer, torch::Generator& generator);
 
+  /// While held (a critic warm-up, critic_warmup.h), updates train only the critic's own
+  /// parameters (ActorCritic::CriticParameters): the others' gradients are zeroed, so Adam, whose
+  /// moments for them are then 0, leaves them bit for bit, and the gradient norm clipped is the
+  /// critic's.
+  void set_actor_held(bool held) { actor_held_ = held; }
+  /// A fresh Adam over the same parameters (moments 0, step count 0), at the same options.
+  void RestartOptimizer() { optimizer_ = Adam(policy_.parameters(), options_.adam); }
+
   FastActorCritic& policy() { return policy_; }
   Adam& optimizer() { return optimizer_; }
   std::int64_t n_updates() const { return n_updates_; }
@@ -55,11 +63,14 @@ class PpoUpdater {
   /// the episode starts of its sequences.
   void SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
   void CheckParametersFinite() const;
+  void ZeroActorGradients();
 
   PpoOptions options_;
   FastActorCritic policy_;
   Adam optimizer_;
   std::int64_t n_updates_ = 0;
+  bool actor_held_ = false;
+  std::vector<torch::Tensor> actor_gradients_;  ///< of every trainable parameter not the critic's
   std::vector<float> features_;  // [rollout, features_dim] when the extractor is frozen
   std::vector<const float*> rows_;
   std::vector<float> actions_, old_log_probs_, advantages_, returns_;

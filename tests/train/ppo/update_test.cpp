@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
+#include <vector>
 
 #include "models/torchscript_export.h"
 #include "tests/src/test_util.h"
@@ -89,6 +92,59 @@ TEST(PpoUpdaterTest, NonFiniteLossStopsTraining) {
   PpoUpdater updater(ActorCritic(ActorCriticOptions{}), options);
   auto generator = at::make_generator<at::CPUGeneratorImpl>(1);
   EXPECT_THROW(updater.Update(buffer, generator), TrainingDiverged);
+}
+
+// A held actor (the critic's warm-up): one update over one minibatch moves the critic's own
+// parameters exactly as an update of everything does (Adam's step is elementwise and no clipping
+// binds), and leaves every other parameter, the unlocked extractor's and the log std included,
+// bit for bit. A restart gives a fresh Adam.
+TEST(PpoUpdaterTest, AHeldActorLeavesAllButTheCriticsOwnParametersBitIdentical) {
+  PpoOptions options = SmallOptions();
+  options.n_epochs = 1;
+  options.batch_size = options.n_envs * options.n_steps;  // one minibatch
+  options.max_grad_norm = 1e6;
+  torch::manual_seed(5);
+  const RolloutBuffer buffer = SyntheticRollout(options);
+  ActorCriticOptions model_options;
+  model_options.extractor.kind = ExtractorKind::kBaseline;  // trains with the actor
+  ActorCritic held(model_options);
+  ActorCritic whole(model_options);
+  const auto before = Clones(held->parameters());
+
+  PpoUpdater held_updater(held, options);
+  held_updater.set_actor_held(true);
+  auto generator = at::make_generator<at::CPUGeneratorImpl>(1);
+  held_updater.Update(buffer, generator);
+  PpoUpdater whole_updater(whole, options);
+  generator = at::make_generator<at::CPUGeneratorImpl>(1);
+  whole_updater.Update(buffer, generator);
+
+  const std::vector<torch::Tensor> critic = held->CriticParameters();
+  const auto held_after = held->named_parameters();
+  const auto whole_after = whole->named_parameters();
+  int critic_count = 0;
+  for (std::size_t i = 0; i < held_after.size(); ++i) {
+    const std::string& name = held_after[i].key();
+    const torch::Tensor& parameter = held_after[i].value();
+    const bool critics = std::any_of(critic.begin(), critic.end(),
+                                     [&](const torch::Tensor& c) { return c.is_same(parameter); });
+    critic_count += critics;
+    if (critics) {
+      EXPECT_FALSE(torch::equal(parameter, before[i])) << name;
+      EXPECT_TRUE(torch::equal(parameter, whole_after[name])) << name;
+    } else {
+      EXPECT_TRUE(torch::equal(parameter, before[i])) << name;
+      EXPECT_FALSE(torch::equal(whole_after[name], before[i])) << name;
+    }
+  }
+  EXPECT_EQ(critic_count, 8);  // three trunk layers and the head, weights and biases
+
+  ASSERT_EQ(held_updater.optimizer().step_count(), 1);
+  held_updater.RestartOptimizer();
+  EXPECT_EQ(held_updater.optimizer().step_count(), 0);
+  for (const torch::Tensor& moment : held_updater.optimizer().exp_avg_sq()) {
+    EXPECT_EQ(moment.abs().max().item<float>(), 0.0f);
+  }
 }
 
 }  // namespace
