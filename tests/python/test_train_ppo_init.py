@@ -1,7 +1,7 @@
 """train_ppo's policy.init: a run starts from a policy file's weights (at learning rate 0 it
 ends with them, bit for bit, where its own initialisation differs), learns on from them, and
 records the file in its configuration; with ppo.critic_warmup_steps its first updates train the
-critic alone."""
+critic alone, and policy.init_keeps_log_std false replaces its log std."""
 
 import subprocess
 
@@ -78,10 +78,26 @@ def test_a_critic_warmup_holds_the_actor_then_trains_it(start, tmp_path):
     assert "step 256: the critic's warm-up is over" in log
 
 
-def test_a_warmup_as_long_as_the_run_is_refused(tmp_path):
+def test_a_start_can_replace_the_files_log_std(start, tmp_path):
+    """At learning rate 0: every weight is the file's but the log std, policy.log_std_init's."""
+    started = weights(train(tmp_path / "narrow", "--set", "ppo.learning_rate=0", "--set",
+                            f"policy.init={start}", "--set", "policy.init_keeps_log_std=false",
+                            "--set", "policy.log_std_init=-1.5"))
+    initial = weights(start)
+    assert not torch.equal(initial["log_std"], torch.full((2,), -1.5))
+    assert torch.equal(started["log_std"], torch.full((2,), -1.5))
+    assert all(torch.equal(started[name], initial[name]) for name in initial if name != "log_std")
+    log = (tmp_path / "narrow" / "train_ppo.log").read_text()
+    assert "its log std replaced by -1.5 (policy.log_std_init)" in log
+
+
+@pytest.mark.parametrize("setting, message", [
+    ("ppo.critic_warmup_steps=128", "ppo.critic_warmup_steps = 128 covers the whole run"),
+    ("policy.init_keeps_log_std=false", "policy.init_keeps_log_std = false needs a policy.init"),
+])
+def test_settings_that_cannot_hold_are_refused(setting, message, tmp_path):
     result = subprocess.run([str(BIN_DIR / "train_ppo"), "--out", str(tmp_path / "run"),
-                             *map(str, TINY), "--set", "ppo.critic_warmup_steps=128"],
-                            capture_output=True, text=True)
+                             *map(str, TINY), "--set", setting], capture_output=True, text=True)
     assert result.returncode == 2
-    assert "ppo.critic_warmup_steps = 128 covers the whole run" in result.stderr
+    assert message in result.stderr
     assert not (tmp_path / "run").exists()

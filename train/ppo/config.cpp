@@ -154,6 +154,13 @@ void RequireRawNavigationForInitPolicy(PpoRunOptions& options) {
   }
 }
 
+// A log std to keep or replace without a policy file to take it from.
+void RequireInitPolicyForItsLogStd(PpoRunOptions& options) {
+  if (options.init_policy.empty() && !options.init_keeps_log_std) {
+    throw UserError("policy.init_keeps_log_std = false needs a policy.init file");
+  }
+}
+
 // An expected clipped action for a policy whose actions are squashed, not clipped.
 void RequireClippedActionsForDeterministicStd(PpoRunOptions& options) {
   if (options.model.squash_actions && options.model.smooths_deterministic_action()) {
@@ -291,6 +298,10 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "policy.init", [](Run & o) -> auto& { return o.init_policy; },
           "policy.pt (of train_ppo or distill_policy.py, of this run's architecture and "
           "observations) whose weights the run starts from; empty: its own initialisation")
+      .Bool(
+          "policy.init_keeps_log_std", [](Run & o) -> auto& { return o.init_keeps_log_std; },
+          "with policy.init: keep the file's log std (true) or start from policy.log_std_init "
+          "(false)")
       .Number(
           "policy.log_std_init", [](Run & o) -> auto& { return o.model.log_std_init; },
           "initial log std of the action distribution (std e^-10 to e^2)", -10.0, 2.0)
@@ -385,6 +396,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireMemoryForItsTraining)
       .Then(RequireClippedActionsForDeterministicStd)
       .Then(RequireRawNavigationForInitPolicy)
+      .Then(RequireInitPolicyForItsLogStd)
       .Then(DeriveModelSettings);
   return binding;
 }

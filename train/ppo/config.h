@@ -65,6 +65,9 @@ struct PpoRunOptions {
   /// from instead of its own initialisation; empty: none. Adam's moments and every running
   /// statistic still start afresh.
   std::filesystem::path init_policy;
+  /// With init_policy: keep its log std (true), or start from model.log_std_init (false), e.g. a
+  /// narrower distribution, so that the policy PPO trains acts nearer the deterministic one tested.
+  bool init_keeps_log_std = true;
   /// Log closeness, as in the authors' environment code: the ablation (studies/ablation.yaml)
   /// found it is what their agents were trained with, and what closes the gap to them.
   EnvironmentConfig env = AuthorsTrainingEnvironment();

@@ -301,6 +301,10 @@ ActorCritic InitialPolicy(const PpoRunOptions& options) {
   ActorCritic model(options.model);
   if (!options.init_policy.empty()) {
     LoadPolicyWeights(options.init_policy, ObservationSettingsOf(options.env), *model);
+    if (!options.init_keeps_log_std) {
+      const torch::NoGradGuard no_grad;
+      model->log_std().fill_(options.model.log_std_init);
+    }
   }
   return model;
 }
@@ -318,7 +322,11 @@ PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resol
                options.ppo.total_steps, ExtractorKindName(extractor.kind), training_mode,
                run_dir.string());
   if (!resume && !options.init_policy.empty()) {
-    spdlog::info("starting from the weights of {}", options.init_policy.string());
+    spdlog::info("starting from the weights of {}{}", options.init_policy.string(),
+                 options.init_keeps_log_std
+                     ? ""
+                     : fmt::format(", its log std replaced by {} (policy.log_std_init)",
+                                   options.model.log_std_init));
   }
   if (options.ppo.critic_warmup_steps > 0) {
     spdlog::info("the critic trains alone, the actor held, until step {} (ppo.critic_warmup_steps)",
