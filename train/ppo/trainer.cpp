@@ -202,9 +202,8 @@ class PpoTrainer {
 
   // The critic warm-up's phase of the update that follows the rollout just collected.
   void SetUpdatePhase() {
-    const UpdatePhase phase = UpdatePhaseAt(
-        counters_.global_step, static_cast<std::int64_t>(options_.n_envs) * options_.n_steps,
-        options_.critic_warmup_steps);
+    const UpdatePhase phase =
+        UpdatePhaseAt(counters_.global_step, buffer_.size(), options_.critic_warmup_steps);
     updater_.set_actor_held(phase == UpdatePhase::kCriticOnly);
     if (phase != UpdatePhase::kActorJoins) return;
     updater_.RestartOptimizer();
