@@ -48,6 +48,12 @@ std::filesystem::path StudentPolicyFile(const std::filesystem::path& out,
   return out / StudentFolder(student, k) / "policy.pt";
 }
 
+// The policy file of fine-tune `k` of the kind `fine_tune`.
+std::filesystem::path FineTunePolicyFile(const std::filesystem::path& out,
+                                         const std::string& fine_tune, int k) {
+  return out / FineTuneFolder(fine_tune, k) / "policy.pt";
+}
+
 // The policy file of seed `k` of the ensemble kind or configuration `teacher`.
 std::filesystem::path TeacherPolicyFile(const StudySpec& spec, const std::filesystem::path& out,
                                         const std::string& teacher, int k) {
@@ -101,6 +107,12 @@ EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::p
       group.policies.push_back(StudentPolicyFile(out, student.name, k));
     }
   }
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    for (int k = 0; k < fine_tune.count; ++k) {
+      group.models.push_back(SeedModelName(fine_tune.name, k));
+      group.policies.push_back(FineTunePolicyFile(out, fine_tune.name, k));
+    }
+  }
   for (const std::filesystem::path& agent : spec.evaluation.reference_agents) {
     group.models.push_back("ref." + agent.stem().string());
     group.policies.push_back(agent);
@@ -125,25 +137,72 @@ std::size_t AddJob(std::vector<StudyJob>& jobs, StudyJob job) {
   return jobs.size() - 1;
 }
 
-// One plot_training job per configuration, drawing the training curves of all its seeds.
+// One plot_training job per kind of PPO run, drawing the training curves of all its seeds.
 void AddTrainingFigureJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
                            const std::filesystem::path& out,
                            const std::map<std::string, std::size_t>& policy_jobs) {
-  for (const PpoConfigSpec& config : spec.ppo_configs) {
-    const std::filesystem::path png = out / TrainingFigurePath(config.name);
-    StudyJob job =
-        NewJob("figures/training/" + config.name, "plot_training",
-               {"--out", png.string(), "--title",
-                "Training of " + config.name + ", " + std::to_string(spec.ppo_seeds) + " seeds"},
-               png, kFigureSeconds);
+  for (const PpoRunKind& kind : PpoRunKinds(spec)) {
+    const std::filesystem::path png = out / TrainingFigurePath(kind.name);
+    StudyJob job = NewJob("figures/training/" + kind.name, "plot_training",
+                          {"--out", png.string(), "--title",
+                           fmt::format("Training of {}, {} seeds", kind.name, kind.folders.size())},
+                          png, kFigureSeconds);
     job.check_configuration = false;  // every argument comes from the study, none from the user
-    for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const std::filesystem::path policy = RunPolicy(out, config.name, k);
-      job.args.insert(job.args.end(),
-                      {"--run", "seed_" + std::to_string(k) + "=" + policy.parent_path().string()});
-      job.dependencies.push_back(policy_jobs.at(policy.string()));
+    for (std::size_t k = 0; k < kind.folders.size(); ++k) {
+      const std::filesystem::path run = out / kind.folders[k];
+      job.args.insert(job.args.end(), {"--run", fmt::format("seed_{}={}", k, run.string())});
+      job.dependencies.push_back(policy_jobs.at((run / "policy.pt").string()));
     }
     AddJob(jobs, job);
+  }
+}
+
+// A train_ppo job with `config`'s settings at training seed `seed` for `steps` environment
+// steps, writing the run folder `id` under `out`; it depends on the VAE job of its encoder.
+StudyJob PpoRunJob(const StudySpec& spec, const PpoConfigSpec& config, int seed, std::int64_t steps,
+                   const std::filesystem::path& out, const std::string& id,
+                   const std::map<std::string, std::size_t>& vae_jobs) {
+  const std::filesystem::path dir = out / id;
+  StudyJob job = NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
+                        static_cast<double>(steps) / kPpoStepsPerSecond);
+  job.resume_args = {"--resume", dir.string()};
+  job.resume_marker = dir / "training_state.pt";
+  if (config.extractor != "baseline") {
+    const VaeSpec& vae = *std::find_if(spec.vaes.begin(), spec.vaes.end(),
+                                       [&](const VaeSpec& v) { return v.name == config.vae; });
+    // PPO seed k uses VAE seed k (cycling when the VAE has fewer seeds).
+    const std::filesystem::path encoder =
+        out / "vae" / vae.name / ("seed_" + std::to_string(seed % vae.seeds)) / "encoder.pt";
+    job.args.insert(job.args.end(),
+                    {"--encoder", encoder.string(), config.locked ? "--locked" : "--unlocked"});
+    job.dependencies.push_back(vae_jobs.at(config.vae));
+  }
+  job.args.insert(job.args.end(), {"--steps", std::to_string(steps), "--seed", std::to_string(seed),
+                                   "--out", dir.string()});
+  AppendOverrides(job.args, spec.ppo_overrides);
+  AppendOverrides(job.args, config.overrides);
+  return job;
+}
+
+// One train_ppo job per fine-tuned student, after the student (study_spec.h, FineTuneSpec).
+void AddFineTuneJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
+                     const std::filesystem::path& out,
+                     const std::map<std::string, std::size_t>& vae_jobs,
+                     std::map<std::string, std::size_t>& policy_jobs) {
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    const StudentSpec& student = *spec.FindStudent(fine_tune.student);
+    const PpoConfigSpec& start = *spec.FindConfig(student.start);
+    for (int k = 0; k < fine_tune.count; ++k) {
+      const std::filesystem::path student_policy = StudentPolicyFile(out, student.name, k);
+      StudyJob job = PpoRunJob(spec, start, spec.StartSeed(student, k),
+                               fine_tune.steps > 0 ? fine_tune.steps : spec.StepsOf(start), out,
+                               FineTuneFolder(fine_tune.name, k).string(), vae_jobs);
+      AppendOverrides(job.args, {"policy.init=" + student_policy.string()});
+      AppendOverrides(job.args, fine_tune.overrides);
+      job.check_configuration = k == 0;
+      job.dependencies.push_back(policy_jobs.at(student_policy.string()));
+      policy_jobs[FineTunePolicyFile(out, fine_tune.name, k).string()] = AddJob(jobs, job);
+    }
   }
 }
 
@@ -232,6 +291,25 @@ std::filesystem::path StudentSummaryFile(const std::string& student, int k) {
   return StudentFolder(student, k) / "policy.pt.json";
 }
 
+std::filesystem::path FineTuneFolder(const std::string& fine_tune, int k) {
+  return std::filesystem::path("fine_tunes") / fine_tune / ("seed_" + std::to_string(k));
+}
+
+std::vector<PpoRunKind> PpoRunKinds(const StudySpec& spec) {
+  std::vector<PpoRunKind> kinds;
+  for (const PpoConfigSpec& config : spec.ppo_configs) {
+    PpoRunKind& kind = kinds.emplace_back(PpoRunKind{config.name, {}});
+    for (int k = 0; k < spec.ppo_seeds; ++k) kind.folders.push_back(RunFolder(config.name, k));
+  }
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    PpoRunKind& kind = kinds.emplace_back(PpoRunKind{fine_tune.name, {}});
+    for (int k = 0; k < fine_tune.count; ++k) {
+      kind.folders.push_back(FineTuneFolder(fine_tune.name, k));
+    }
+  }
+  return kinds;
+}
+
 std::string SeedModelName(const std::string& config, int seed) {
   return config + ".seed_" + std::to_string(seed);
 }
@@ -277,35 +355,17 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   std::map<std::string, std::size_t> policy_jobs;  // policy.pt path -> the job that writes it
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const std::string id = RunFolder(config.name, k).string();
-      const std::filesystem::path dir = out / id;
-      StudyJob job =
-          NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
-                 static_cast<double>(spec.StepsOf(config)) / kPpoStepsPerSecond);
-      job.resume_args = {"--resume", dir.string()};
-      job.resume_marker = dir / "training_state.pt";
-      if (config.extractor != "baseline") {
-        const VaeSpec& vae = *std::find_if(spec.vaes.begin(), spec.vaes.end(),
-                                           [&](const VaeSpec& v) { return v.name == config.vae; });
-        // PPO seed k uses VAE seed k (cycling when the VAE has fewer seeds).
-        const std::filesystem::path encoder =
-            out / "vae" / vae.name / ("seed_" + std::to_string(k % vae.seeds)) / "encoder.pt";
-        job.args.insert(job.args.end(),
-                        {"--encoder", encoder.string(), config.locked ? "--locked" : "--unlocked"});
-        job.dependencies.push_back(vae_jobs.at(config.vae));
-      }
-      job.args.insert(job.args.end(), {"--steps", std::to_string(spec.StepsOf(config)), "--seed",
-                                       std::to_string(k), "--out", dir.string()});
-      AppendOverrides(job.args, spec.ppo_overrides);
-      AppendOverrides(job.args, config.overrides);
+      StudyJob job = PpoRunJob(spec, config, k, spec.StepsOf(config), out,
+                               RunFolder(config.name, k).string(), vae_jobs);
       job.check_configuration = k == 0;
-      policy_jobs[(dir / "policy.pt").string()] = AddJob(jobs, job);
+      policy_jobs[RunPolicy(out, config.name, k).string()] = AddJob(jobs, job);
     }
   }
 
-  AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   AddEnsembleJobs(jobs, spec, out, policy_jobs);
   AddStudentJobs(jobs, spec, out, policy_jobs);
+  AddFineTuneJobs(jobs, spec, out, vae_jobs, policy_jobs);
+  AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path dir = out / "eval" / group.scenario_set;
     StudyJob job = NewJob(

@@ -1,6 +1,6 @@
 // The jobs of a study and their order: dataset -> VAEs -> PPO runs -> ensembles -> students ->
-// evaluations. Each job is
-// one run of a project program into its own output folder under the study folder
+// fine-tunes -> evaluations. Each job is one run of a project program into its own output folder
+// under the study folder
 // (interfaces.md, section "study"); a job is complete when its program's last output exists, and
 // resumable when its program left a checkpoint.
 #pragma once
@@ -65,6 +65,20 @@ std::filesystem::path StudentFolder(const std::string& student, int k);
 /// "<StudentFolder>/policy.pt.json": distill_policy's summary of the student's run (its settings,
 /// each iteration, whether it finished), relative to the study's output folder.
 std::filesystem::path StudentSummaryFile(const std::string& student, int k);
+
+/// "fine_tunes/<fine_tune>/seed_<k>": a fine-tuned student's train_ppo run folder under the study
+/// folder, and its job's id.
+std::filesystem::path FineTuneFolder(const std::string& fine_tune, int k);
+
+/// The train_ppo runs of one PPO configuration or one kind of fine-tuned student: their folders
+/// under the study folder, seed k's k-th.
+struct PpoRunKind {
+  std::string name;
+  std::vector<std::filesystem::path> folders;
+};
+
+/// The study's train_ppo runs: each configuration's, then each kind of fine-tune's.
+std::vector<PpoRunKind> PpoRunKinds(const StudySpec& spec);
 
 /// "<config>.seed_<k>": the model name of a PPO run in evaluations.
 std::string SeedModelName(const std::string& config, int seed);

@@ -351,21 +351,21 @@ void RunsTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& sp
         "actions, training worlds).\n\n"
         "| configuration | wall-clock s | std at the end | training collisions % | training "
         "time-outs % |\n|---|---|---|---|---|\n";
-  for (const PpoConfigSpec& config : spec.ppo_configs) {
+  for (const PpoRunKind& kind : PpoRunKinds(spec)) {
     std::vector<std::string> walls, stds, collisions, time_outs;
-    for (int k = 0; k < spec.ppo_seeds; ++k) {
-      const RunDiagnostics run = ReadRunDiagnostics(out / RunFolder(config.name, k));
+    for (const std::filesystem::path& folder : kind.folders) {
+      const RunDiagnostics run = ReadRunDiagnostics(out / folder);
       walls.push_back(fmt::format("{:.0f}", run.wall_s));
       stds.push_back(fmt::format("{:.3g}", run.final_std));
       collisions.push_back(fmt::format("{:.1f}", run.late_collisions));
       time_outs.push_back(fmt::format("{:.1f}", run.late_time_outs));
-      json["runs"][config.name].push_back({{"wall_s", run.wall_s},
-                                           {"final_std", run.final_std},
-                                           {"late_episodes", run.late_episodes},
-                                           {"late_collisions", run.late_collisions},
-                                           {"late_time_outs", run.late_time_outs}});
+      json["runs"][kind.name].push_back({{"wall_s", run.wall_s},
+                                         {"final_std", run.final_std},
+                                         {"late_episodes", run.late_episodes},
+                                         {"late_collisions", run.late_collisions},
+                                         {"late_time_outs", run.late_time_outs}});
     }
-    md << fmt::format("| {} | {} | {} | {} | {} |\n", config.name, fmt::join(walls, ", "),
+    md << fmt::format("| {} | {} | {} | {} | {} |\n", kind.name, fmt::join(walls, ", "),
                       fmt::join(stds, ", "), fmt::join(collisions, ", "),
                       fmt::join(time_outs, ", "));
   }
@@ -380,15 +380,15 @@ void VaeFigures(std::ostringstream& md, const std::filesystem::path& out) {
   }
 }
 
-// How the runs ended, and the training curves of each configuration its figure job drew.
+// How the runs ended, and the training curves of each kind of run its figure job drew.
 void TrainingSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
                      const std::filesystem::path& out) {
   md << "\n## Training\n";
   RunsTable(md, json, spec, out);
-  for (const PpoConfigSpec& config : spec.ppo_configs) {
-    const std::filesystem::path png = TrainingFigurePath(config.name);
+  for (const PpoRunKind& kind : PpoRunKinds(spec)) {
+    const std::filesystem::path png = TrainingFigurePath(kind.name);
     if (std::filesystem::exists(out / png)) {
-      md << "\n![training of " << config.name << "](" << png.string() << ")\n";
+      md << "\n![training of " << kind.name << "](" << png.string() << ")\n";
     }
   }
 }
@@ -446,6 +446,29 @@ void StudentSection(std::ostringstream& md, nlohmann::json& json, const StudySpe
                                       {"options", student.options},
                                       {"count", student.count},
                                       {"seconds", seconds}};
+  }
+}
+
+// The kinds of fine-tuned student, what each starts from and what it changes, into the report's
+// head and summary.json.
+void FineTuneSection(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec) {
+  if (spec.fine_tunes.empty()) return;
+  md << "\nFine-tuned students, each student k trained further by PPO (train_ppo from its policy, "
+        "policy.init) with the settings of the run it started from, then the kind's own:\n\n";
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    const StudentSpec& student = *spec.FindStudent(fine_tune.student);
+    const std::int64_t steps =
+        fine_tune.steps > 0 ? fine_tune.steps : spec.StepsOf(*spec.FindConfig(student.start));
+    md << fmt::format("- {}: {} of {}, {} steps with the settings of {}{}\n", fine_tune.name,
+                      fine_tune.count, student.name, steps, student.start,
+                      fine_tune.overrides.empty()
+                          ? ""
+                          : fmt::format(" and {}", fmt::join(fine_tune.overrides, ", ")));
+    json["fine_tunes"][fine_tune.name] = {{"student", student.name},
+                                          {"start", student.start},
+                                          {"steps", steps},
+                                          {"set", fine_tune.overrides},
+                                          {"count", fine_tune.count}};
   }
 }
 
@@ -537,6 +560,7 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
      << "; wall-clock of the study (every run of it) " << fmt::format("{:.0f}", wall_s) << " s.\n";
   EnsembleSection(md, json, spec);
   StudentSection(md, json, spec, out);
+  FineTuneSection(md, json, spec);
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport report =
         SummariseScenarioSet(spec, results, spec.evaluation.compare_to);

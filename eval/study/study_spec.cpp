@@ -334,6 +334,42 @@ StudentSpec ReadStudent(const Reader& reader, const YAML::Node& name, const YAML
   return student;
 }
 
+// train_ppo's keys a fine-tune's set may not give: the study sets them (FineTuneSpec).
+const std::set<std::string> kStudyFineTuneKeys = {"policy.init"};
+
+FineTuneSpec ReadFineTune(const Reader& reader, const YAML::Node& name, const YAML::Node& node,
+                          const StudySpec& spec) {
+  FineTuneSpec fine_tune;
+  const std::string key = "fine_tunes." + name.as<std::string>();
+  fine_tune.name = reader.Name(name, key);
+  if (spec.FindConfig(fine_tune.name) || spec.FindEnsemble(fine_tune.name) ||
+      spec.FindStudent(fine_tune.name)) {
+    reader.Fail(key, "is also the name of a PPO configuration, ensemble or student");
+  }
+  reader.RequireMap(node, key, {"student", "steps", "set", "compare_to"});
+  if (!node["student"]) reader.Fail(key + ".student", "missing");
+  fine_tune.student = reader.String(node["student"], key + ".student");
+  const StudentSpec* student = spec.FindStudent(fine_tune.student);
+  if (!student) {
+    reader.Fail(key + ".student", "'" + fine_tune.student + "' is not a student of the study");
+  }
+  fine_tune.count = student->count;
+  if (node["steps"]) {
+    fine_tune.steps = reader.Integer(node["steps"], key + ".steps", 1, kMaxPpoSteps);
+  }
+  fine_tune.overrides = reader.OverridesOf(node["set"], key + ".set");
+  for (const std::string& assignment : fine_tune.overrides) {
+    const std::string set_key = assignment.substr(0, assignment.find('='));
+    if (kStudyFineTuneKeys.count(set_key) > 0) {
+      reader.Fail(key + ".set." + set_key, "is set by the study");
+    }
+  }
+  if (node["compare_to"]) {
+    fine_tune.compare_to = reader.Name(node["compare_to"], key + ".compare_to");
+  }
+  return fine_tune;
+}
+
 // A file named relative to the study file's folder; it must exist.
 std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
                                    const std::string& key) {
@@ -401,6 +437,9 @@ std::vector<SeededModel> StudySpec::SeededModels() const {
   for (const StudentSpec& student : students) {
     models.push_back({student.name, student.count, student.compare_to});
   }
+  for (const FineTuneSpec& fine_tune : fine_tunes) {
+    models.push_back({fine_tune.name, fine_tune.count, fine_tune.compare_to});
+  }
   return models;
 }
 
@@ -421,6 +460,12 @@ const EnsembleSpec* StudySpec::FindEnsemble(const std::string& name) const {
   return found == ensembles.end() ? nullptr : &*found;
 }
 
+const StudentSpec* StudySpec::FindStudent(const std::string& name) const {
+  const auto found = std::find_if(students.begin(), students.end(),
+                                  [&](const StudentSpec& s) { return s.name == name; });
+  return found == students.end() ? nullptr : &*found;
+}
+
 int StudySpec::StartSeed(const StudentSpec& student, int k) const {
   if (const EnsembleSpec* ensemble = FindEnsemble(student.teacher)) {
     const auto member =
@@ -435,9 +480,9 @@ int StudySpec::StartSeed(const StudentSpec& student, int k) const {
 StudySpec LoadStudySpec(const std::filesystem::path& path) {
   const YAML::Node root = LoadYamlFile(path);
   const Reader reader(path);
-  reader.RequireMap(
-      root, "",
-      {"name", "dataset", "vaes", "ppo", "ensembles", "students", "evaluation", "vae_figures"});
+  reader.RequireMap(root, "",
+                    {"name", "dataset", "vaes", "ppo", "ensembles", "students", "fine_tunes",
+                     "evaluation", "vae_figures"});
   StudySpec spec;
   spec.name = root["name"] ? reader.Name(root["name"], "name") : path.stem().string();
   spec.dataset_overrides = reader.OverridesOf(root["dataset"], "dataset");
@@ -445,6 +490,7 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   ReadPpo(reader, root["ppo"], spec);
   spec.ensembles = ReadNamedEntries(reader, root["ensembles"], "ensembles", spec, ReadEnsemble);
   spec.students = ReadNamedEntries(reader, root["students"], "students", spec, ReadStudent);
+  spec.fine_tunes = ReadNamedEntries(reader, root["fine_tunes"], "fine_tunes", spec, ReadFineTune);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
   const std::vector<SeededModel> models = spec.SeededModels();
@@ -452,8 +498,9 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
     const bool known = std::any_of(models.begin(), models.end(),
                                    [&](const SeededModel& m) { return m.name == name; });
     if (!known) {
-      reader.Fail(key,
-                  "'" + name + "' is not a PPO configuration, ensemble or student of the study");
+      reader.Fail(key, "'" + name +
+                           "' is not a PPO configuration, ensemble, student or fine-tune of the "
+                           "study");
     }
   };
   if (root["evaluation"] && root["evaluation"]["compare_to"]) {
@@ -474,12 +521,21 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
       reader.Fail(key, "a student is not compared with itself");
     check_compared_with(student.compare_to, key);
   }
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    if (fine_tune.compare_to.empty()) continue;
+    const std::string key = "fine_tunes." + fine_tune.name + ".compare_to";
+    if (fine_tune.compare_to == fine_tune.name) {
+      reader.Fail(key, "a fine-tune is not compared with itself");
+    }
+    check_compared_with(fine_tune.compare_to, key);
+  }
   return spec;
 }
 
 namespace {
 
-// The students whose teacher and start the (restricted) study still has, one per teacher seed.
+// The students whose teacher and start the (restricted) study still has, one per teacher seed,
+// and the fine-tunes of the students kept, one per student.
 void KeepTaughtStudents(StudySpec& spec) {
   std::vector<StudentSpec> kept;
   for (StudentSpec student : spec.students) {
@@ -487,6 +543,14 @@ void KeepTaughtStudents(StudySpec& spec) {
     if (student.count > 0 && spec.FindConfig(student.start)) kept.push_back(student);
   }
   spec.students = kept;
+  std::vector<FineTuneSpec> kept_fine_tunes;
+  for (FineTuneSpec fine_tune : spec.fine_tunes) {
+    if (const StudentSpec* student = spec.FindStudent(fine_tune.student)) {
+      fine_tune.count = student->count;
+      kept_fine_tunes.push_back(fine_tune);
+    }
+  }
+  spec.fine_tunes = kept_fine_tunes;
 }
 
 }  // namespace

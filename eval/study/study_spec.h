@@ -18,6 +18,8 @@
 //     two_shallow: {members: [shallow_locked, shallow_locked], count: 2}
 //   students:                                       # teachers distilled into one network each
 //     distilled: {teacher: two_shallow, start: shallow_memory, options: {traps: 8}}
+//   fine_tunes:                                     # students trained further by PPO
+//     distilled_ppo: {student: distilled, steps: 3000000, set: {ppo.learning_rate: 2e-5}}
 //   evaluation:
 //     episodes: 1000                                # scenarios of the study's own table
 //     seed: 1
@@ -102,9 +104,22 @@ struct StudentSpec {
   std::string compare_to{};  ///< as PpoConfigSpec::compare_to
 };
 
+/// A kind of fine-tuned student: each student of a kind trained further by PPO (train_ppo with
+/// policy.init = the student's policy). Fine-tune k starts from student k with the settings of the
+/// run that student started from (its configuration's, at its training seed:
+/// StudySpec::StartSeed), then `overrides`, for `steps` environment steps.
+struct FineTuneSpec {
+  std::string name;
+  std::string student;       ///< a kind of student of the study
+  Overrides overrides;       ///< after the start configuration's
+  std::int64_t steps = 0;    ///< 0: the start configuration's steps
+  int count = 1;             ///< fine-tunes of this kind: the student's count
+  std::string compare_to{};  ///< as PpoConfigSpec::compare_to
+};
+
 /// A model of several seeds in the report: a PPO configuration (its training seeds), an ensemble
-/// kind (its ensembles) or a kind of student (its students); its models are named
-/// SeedModelName(name, k), k < seeds.
+/// kind (its ensembles), a kind of student (its students) or of fine-tuned student; its models
+/// are named SeedModelName(name, k), k < seeds.
 struct SeededModel {
   std::string name;
   int seeds = 0;
@@ -132,6 +147,7 @@ struct StudySpec {
   std::vector<PpoConfigSpec> ppo_configs;
   std::vector<EnsembleSpec> ensembles;
   std::vector<StudentSpec> students;
+  std::vector<FineTuneSpec> fine_tunes;
   EvaluationSpec evaluation;
   /// Also draw the paper's VAE figures (padding comparison, latent densities) on the study's
   /// dataset: eight small VAEs, a few minutes.
@@ -141,12 +157,15 @@ struct StudySpec {
   std::int64_t StepsOf(const PpoConfigSpec& config) const {
     return config.steps > 0 ? config.steps : ppo_steps;
   }
-  /// The PPO configurations, then the ensemble kinds, then the kinds of student, in file order.
+  /// The PPO configurations, then the ensemble kinds, the kinds of student and of fine-tuned
+  /// student, in file order.
   std::vector<SeededModel> SeededModels() const;
   /// The PPO configuration named `name`, if there is one.
   const PpoConfigSpec* FindConfig(const std::string& name) const;
   /// The ensemble kind named `name`, if there is one.
   const EnsembleSpec* FindEnsemble(const std::string& name) const;
+  /// The kind of student named `name`, if there is one.
+  const StudentSpec* FindStudent(const std::string& name) const;
   /// The seeds of a teacher: an ensemble kind's count, a configuration's training seeds; 0 when
   /// the study has neither of that name.
   int TeacherSeeds(const std::string& teacher) const;
@@ -158,9 +177,10 @@ struct StudySpec {
 StudySpec LoadStudySpec(const std::filesystem::path& path);
 
 /// The study restricted to the PPO configurations `only` (and the VAEs they use, the ensembles
-/// all of whose members it keeps, the students whose teacher and start it keeps, no VAE
-/// figures), with `seeds` training seeds when > 0 (and as many ensembles of each kind as they
-/// give, none when they give none; a student per teacher seed). An unknown name is a UserError.
+/// all of whose members it keeps, the students whose teacher and start it keeps, the fine-tunes
+/// of the students it keeps, no VAE figures), with `seeds` training seeds when > 0 (and as many
+/// ensembles of each kind as they give, none when they give none; a student per teacher seed, a
+/// fine-tune per student). An unknown name is a UserError.
 StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
 
 }  // namespace colav

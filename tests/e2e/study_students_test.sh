@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Students in a study, end to end with the real programs at a tiny budget: a bad distill_policy
 # option is refused before any work; a memory relieved by the baseline at a stall, distilled into
-# one network per seed (build/bin/distill_policy), is evaluated and reported with the runs; a
-# rerun skips every job, and one whose options changed is refused; a study stopped during a
-# distillation exits 130 and the same command continues it from its state.
+# one network per seed (build/bin/distill_policy), then fine-tuned by train_ppo from each student,
+# is evaluated and reported with the runs; a rerun skips every job, and one whose options changed
+# is refused; a study stopped during a distillation exits 130 and the same command continues it
+# from its state.
 #   study_students_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
 # shellcheck source=tests/e2e/study_test_lib.sh
@@ -27,6 +28,11 @@ students:
     teacher: relieved
     start: memory
     options: {iterations: 2, steps: 16, worlds: 2, sequence: 8, batch: 4, epochs: 1, keep: 2}
+fine_tunes:
+  tuned:
+    student: taught
+    steps: 4096
+    set: {policy.init_keeps_log_std: false, policy.log_std_init: -1.0}
 evaluation: {episodes: 4, seed: 3, paper_episodes: 0}
 YAML
 
@@ -44,8 +50,16 @@ for k in 0 1; do
 done
 grep -q "^- taught: 2 of relieved starting from memory, with --iterations 2 .*; seconds of each distillation: [0-9]*, [0-9]*$" \
   "$WORK/run/REPORT.md" || { grep taught "$WORK/run/REPORT.md"; fail "no students in the report"; }
-# the dataset, 4 PPO runs, 2 figures, 2 ensembles, 2 students, 1 evaluation
-grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+grep -q "^- tuned: 2 of taught, 4096 steps with the settings of memory and policy.init_keeps_log_std=false, policy.log_std_init=-1.0$" \
+  "$WORK/run/REPORT.md" || { grep tuned "$WORK/run/REPORT.md"; fail "no fine-tunes in the report"; }
+for k in 0 1; do
+  [ -s "$WORK/run/fine_tunes/tuned/seed_$k/policy.pt" ] || fail "no fine-tune $k"
+  grep -q "init: \"$WORK/run/students/taught/seed_$k/policy.pt\"" \
+    "$WORK/run/fine_tunes/tuned/seed_$k/config.yaml" || fail "fine-tune $k did not start from its student"
+done
+[ -s "$WORK/run/figures/training_tuned.png" ] || fail "no training figure of the fine-tunes"
+# the dataset, 4 PPO runs, 3 figures, 2 ensembles, 2 students, 2 fine-tunes, 1 evaluation
+grep -q "15 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
 "$COLAV_PYTHON3" - "$WORK/run" <<'PY' || fail "malformed summary.json or student summary"
 import csv, json, sys
 run = sys.argv[1]
@@ -53,8 +67,10 @@ s = json.load(open(f"{run}/summary.json"))
 assert s["students"]["taught"]["teacher"] == "relieved", s["students"]
 assert s["students"]["taught"]["count"] == 2 and len(s["students"]["taught"]["seconds"]) == 2
 models = {m["name"]: m for m in s["scenario_sets"]["study"]["models"]}
-assert set(models) == {"memory", "baseline", "relieved", "taught"}, models.keys()
-assert models["taught"]["seeds"] == 2
+assert set(models) == {"memory", "baseline", "relieved", "taught", "tuned"}, models.keys()
+assert models["taught"]["seeds"] == 2 and models["tuned"]["seeds"] == 2
+assert s["fine_tunes"]["tuned"]["start"] == "memory" and s["fine_tunes"]["tuned"]["steps"] == 4096
+assert len(s["runs"]["tuned"]) == 2, s["runs"]
 poi = [(p["model"], p["over"]) for p in s["scenario_sets"]["study"]["probability_of_improvement"]]
 assert ("taught", "baseline") in poi, poi
 rows = [r for r in csv.DictReader(open(f"{run}/eval/study/episodes.csv"))
@@ -67,7 +83,7 @@ assert student["settings"]["teacher"].endswith("/ensembles/relieved/seed_1/polic
 assert student["settings"]["init"].endswith("/ppo/memory/seed_1/policy.pt"), student
 PY
 
-study_skips_all 12 "$WORK/tiny.yaml" --out "$WORK/run"
+study_skips_all 15 "$WORK/tiny.yaml" --out "$WORK/run"
 
 # A study file whose options changed after its students finished is refused before any work.
 sed -e 's/epochs: 1,/epochs: 2,/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"

@@ -58,9 +58,9 @@ bool WritesReport(const JobRunSummary& summary, const StudyShard& shard, JobClai
 int Study(int argc, char** argv) {
   CLI::App app{
       "Runs a study: the dataset, the VAEs, each PPO configuration times its training seeds, the\n"
-      "ensembles of its runs, the students distilled from them and the evaluations of STUDY.yaml\n"
-      "(see studies/), up to --jobs\n"
-      "programs at once, then writes OUT/REPORT.md and OUT/summary.json. Jobs whose outputs\n"
+      "ensembles of its runs, the students distilled from them, the students fine-tuned by PPO\n"
+      "and the evaluations of STUDY.yaml (see studies/), up to --jobs programs at once, then\n"
+      "writes OUT/REPORT.md and OUT/summary.json. Jobs whose outputs\n"
       "exist are skipped, interrupted ones continue from their checkpoints: rerun the same\n"
       "command after a stop or a failure. Finished runs whose recorded settings differ from\n"
       "what STUDY.yaml now asks for are refused before any work, naming the setting.\n"

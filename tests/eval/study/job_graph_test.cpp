@@ -172,6 +172,63 @@ TEST(JobGraphTest, StudentsAreDistilledFromTheirTeachersAndEvaluatedWithThem) {
   EXPECT_EQ(evaluation.expected_models.at(14), "ref.agent");
 }
 
+// Each fine-tune is a train_ppo job with the settings of the run its student started from (that
+// run's seed, encoder and overrides), then policy.init = the student and the kind's own
+// overrides, after the student; its training curves are drawn and it is evaluated with the rest.
+TEST(JobGraphTest, FineTunesContinueTheirStudentsWithTheirStartsSettings) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.ppo_overrides = {"ppo.gamma=0.99"};
+  spec.ensembles = {{"mix", {"locked", "locked", "log"}, 1, std::nullopt, std::nullopt}};
+  spec.students = {{"taught", "mix", "log", {}, 1, ""}};
+  spec.fine_tunes = {{"tuned", "taught", {"ppo.learning_rate=2e-5"}, 1000, 1, "taught"},
+                     {"long", "taught", {}, 0, 1, ""}};
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const StudyJob& tuned = Find(jobs, "fine_tunes/tuned/seed_0");
+  EXPECT_EQ(tuned.program, "train_ppo");
+  // The ensemble's member "log" is its run 0; log's encoder is unlocked, VAE seed 0.
+  const std::vector<std::string> args = {"--extractor",
+                                         "vae-shallow",
+                                         "--encoder",
+                                         "/s/vae/shallow/seed_0/encoder.pt",
+                                         "--unlocked",
+                                         "--steps",
+                                         "1000",
+                                         "--seed",
+                                         "0",
+                                         "--out",
+                                         "/s/fine_tunes/tuned/seed_0",
+                                         "--set",
+                                         "ppo.gamma=0.99",
+                                         "--set",
+                                         "env.closeness=log",
+                                         "--set",
+                                         "policy.init=/s/students/taught/seed_0/policy.pt",
+                                         "--set",
+                                         "ppo.learning_rate=2e-5"};
+  EXPECT_EQ(tuned.args, args);
+  EXPECT_EQ(tuned.resume_args,
+            (std::vector<std::string>{"--resume", "/s/fine_tunes/tuned/seed_0"}));
+  EXPECT_EQ(tuned.complete_marker, "/s/fine_tunes/tuned/seed_0/summary.json");
+  EXPECT_TRUE(tuned.check_configuration);
+  std::vector<std::string> dependencies;
+  for (const std::size_t d : tuned.dependencies) dependencies.push_back(jobs[d].id);
+  EXPECT_EQ(dependencies, (std::vector<std::string>{"vae/shallow", "students/taught/seed_0"}));
+  // Without steps of its own: the start configuration's (log trains 8192).
+  EXPECT_TRUE(Has(Find(jobs, "fine_tunes/long/seed_0").args, {"--steps", "8192"}));
+  const StudyJob& figure = Find(jobs, "figures/training/tuned");
+  EXPECT_TRUE(Has(figure.args, {"--run", "seed_0=/s/fine_tunes/tuned/seed_0"}));
+  EXPECT_EQ(jobs[figure.dependencies.at(0)].id, "fine_tunes/tuned/seed_0");
+  const StudyJob& evaluation = Find(jobs, "eval/study");
+  EXPECT_TRUE(Has(evaluation.args,
+                  {"--policy", "/s/fine_tunes/tuned/seed_0/policy.pt", "--name", "tuned.seed_0"}));
+  // After the students, before the reference agent.
+  EXPECT_EQ(evaluation.expected_models.at(10), "taught.seed_0");
+  EXPECT_EQ(evaluation.expected_models.at(11), "tuned.seed_0");
+  EXPECT_EQ(evaluation.expected_models.at(12), "long.seed_0");
+  EXPECT_EQ(evaluation.expected_models.at(13), "ref.agent");
+}
+
 // A student's estimated cost, which orders the jobs (the longest first) and makes the ETA, grows
 // with the steps it plays: its iterations, worlds and steps per world.
 TEST(JobGraphTest, AStudentsEstimatedCostGrowsWithTheStepsItPlays) {

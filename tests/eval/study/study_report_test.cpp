@@ -167,7 +167,8 @@ TEST(StudyReportTest, EnsembleKindsAreSummarisedOverTheirEnsembles) {
 // a stall for good, and later members from later stalls.
 TEST(StudyReportTest, EnsembleRulesAreDescribedAsTheyAct) {
   const std::string pace =
-      "the vessel's pace towards the look-ahead point, averaged over 200 steps, falls below 0.1 m/s";
+      "the vessel's pace towards the look-ahead point, averaged over 200 steps, falls below 0.1 "
+      "m/s";
   EnsembleSpec ensemble{"kind", {"near", "far"}, 1, std::nullopt, std::nullopt};
   EXPECT_EQ(DescribeEnsembleRule(ensemble), "");
   ensemble.near_within_m = 20.0;
@@ -184,10 +185,11 @@ TEST(StudyReportTest, EnsembleRulesAreDescribedAsTheyAct) {
       "restarts at each stall)";
   EXPECT_EQ(DescribeEnsembleRule(ensemble),
             ", the first steering within 20 m of an obstacle, the second otherwise and from the "
-            "step " + pace + later);
+            "step " +
+                pace + later);
   ensemble.near_within_m.reset();
-  EXPECT_EQ(DescribeEnsembleRule(ensemble), ", the first steering, the second from the step " +
-                                                pace + later);
+  EXPECT_EQ(DescribeEnsembleRule(ensemble),
+            ", the first steering, the second from the step " + pace + later);
 }
 
 // Where both reach the goal the last step decides; elsewhere, the failures.

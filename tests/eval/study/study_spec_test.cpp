@@ -204,6 +204,43 @@ students:
   EXPECT_TRUE(SelectConfigs(spec, {"a", "flat"}, 0).students.empty());
 }
 
+// A kind of fine-tune trains each student of a kind further, one per student; it goes with its
+// student when a selection drops it.
+TEST(StudySpecTest, StudiesFineTuneStudents) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
+  seeds: 4
+  set: {policy.recurrent_size: 8}
+  configs:
+    a: {}
+    memory: {}
+ensembles:
+  pair: {members: [a, memory], count: 3}
+students:
+  taught: {teacher: pair, start: memory}
+fine_tunes:
+  tuned: {student: taught, steps: 1000, set: {ppo.learning_rate: 2e-5, policy.log_std_init: -1}}
+  plain: {student: taught, compare_to: tuned}
+)"));
+  ASSERT_EQ(spec.fine_tunes.size(), 2U);
+  const FineTuneSpec& tuned = spec.fine_tunes[0];
+  EXPECT_EQ(tuned.student, "taught");
+  EXPECT_EQ(tuned.count, 3);  // taught's students
+  EXPECT_EQ(tuned.steps, 1000);
+  EXPECT_EQ(tuned.overrides,
+            (std::vector<std::string>{"ppo.learning_rate=2e-5", "policy.log_std_init=-1"}));
+  EXPECT_EQ(spec.fine_tunes[1].steps, 0);  // the start configuration's
+  const std::vector<SeededModel> models = spec.SeededModels();
+  ASSERT_EQ(models.size(), 6U);  // 2 configurations, an ensemble, a student, 2 fine-tunes
+  EXPECT_EQ(models[4].name, "tuned");
+  EXPECT_EQ(models[4].seeds, 3);
+  EXPECT_EQ(models[5].compare_to, "tuned");
+  const StudySpec two_seeds = SelectConfigs(spec, {}, 2);
+  ASSERT_EQ(two_seeds.fine_tunes.size(), 2U);
+  EXPECT_EQ(two_seeds.fine_tunes[0].count, 2);
+  EXPECT_TRUE(SelectConfigs(spec, {"memory"}, 0).fine_tunes.empty());  // no pair, no student
+}
+
 TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
   const TemporaryFolder folder;
   const std::vector<std::pair<std::string, std::string>> cases = {
@@ -273,6 +310,28 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
        "start: a, teachers: 2}}",
        "students.s.teachers"},
+      {"ppo: {configs: {a: {}}}\nfine_tunes: {f: {student: a}}", "fine_tunes.f.student"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {steps: 10}}",
+       "fine_tunes.f.student"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {s: {student: s}}",
+       "fine_tunes.s"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {student: s, steps: 0}}",
+       "fine_tunes.f.steps"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {student: s, set: {policy.init: x.pt}}}",
+       "fine_tunes.f.set.policy.init"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {student: s, compare_to: f}}",
+       "fine_tunes.f.compare_to"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {student: s, compare_to: g}}",
+       "fine_tunes.f.compare_to"},
+      {"ppo: {configs: {a: {set: {policy.recurrent_size: 4}}}}\nstudents: {s: {teacher: a, "
+       "start: a}}\nfine_tunes: {f: {student: s, rate: 2}}",
+       "fine_tunes.f.rate"},
   };
   for (const auto& [text, key] : cases) {
     const std::string message = UserErrorMessage([&] { LoadStudySpec(WriteStudy(folder, text)); });
