@@ -33,6 +33,7 @@ nlohmann::ordered_json ModelMetricsJson(const std::vector<MetricSummary>& metric
 nlohmann::ordered_json ModelJson(const ModelSummary& model) {
   return {{"name", model.name},
           {"policy", model.policy},
+          {"policy_fingerprint", model.policy_fingerprint},
           {"observation_settings", model.observation_settings},
           {"episodes", model.episodes},
           {"goals_reached", model.goals_reached},
@@ -126,6 +127,7 @@ ModelSummary ModelFromJson(const nlohmann::json& json) {
   model.collisions = json.at("collisions").get<int>();
   model.truncated = json.at("truncated").get<int>();
   model.observation_settings = json.value("observation_settings", std::string());
+  model.policy_fingerprint = json.value("policy_fingerprint", std::string());
   for (const SummaryMetric& metric : SummaryMetrics()) {
     const nlohmann::json& metric_json = json.at("metrics").at(metric.key);
     const MeanConfidenceInterval t = ConfidenceIntervalFromJson(metric_json);

@@ -28,7 +28,8 @@ EvaluationReport MakeEvaluationReport(const std::string& scenarios,
                                       const std::vector<std::string>& policies,
                                       const std::vector<std::vector<EpisodeMetrics>>& episodes);
 
-/// summary.json: {"scenarios", "seed", "models": [{"name", "policy", "observation_settings",
+/// summary.json: {"scenarios", "seed", "models": [{"name", "policy", "policy_fingerprint",
+/// "observation_settings",
 /// "episodes", "goals_reached", "collisions", "truncated", "metrics": {key: {"n", "mean", "sd",
 /// "low", "high", "half_width", "in_range": {"method", "low", "high"}}}}], "paired_differences":
 /// [{"first", "second", "metrics": {...}}]}. low/high are Student-t; in_range is the interval that

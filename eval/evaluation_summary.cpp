@@ -66,7 +66,7 @@ const std::vector<SummaryMetric>& SummaryMetrics() {
 
 ModelSummary SummariseModel(const std::string& name, const std::string& policy,
                             const std::vector<EpisodeMetrics>& episodes) {
-  ModelSummary summary{name, policy, static_cast<int>(episodes.size()), 0, 0, 0, {}, {}};
+  ModelSummary summary{name, policy, static_cast<int>(episodes.size()), 0, 0, 0, {}, {}, {}};
   for (const EpisodeMetrics& episode : episodes) {
     summary.goals_reached += episode.goal_reached ? 1 : 0;
     summary.collisions += episode.collision ? 1 : 0;

@@ -54,6 +54,8 @@ struct ModelSummary {
   /// The observation settings the model ran under and where they came from, e.g. "closeness log
   /// (recorded in the file)"; empty when not told.
   std::string observation_settings;
+  /// PolicyFingerprint of its policy file (eval/policy_fingerprint.h); empty when not told.
+  std::string policy_fingerprint;
 };
 
 /// Model a minus model b on the same episodes.

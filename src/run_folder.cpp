@@ -32,6 +32,21 @@ std::map<std::string, std::string> FlatValues(const Config& config) {
 
 }  // namespace
 
+std::optional<DifferingSetting> FirstDifferingSetting(const Config& config, const Config& recorded,
+                                                      const std::vector<std::string>& free_keys) {
+  const std::map<std::string, std::string> stored = FlatValues(recorded);
+  const std::map<std::string, std::string> current = FlatValues(config);
+  const auto changed = std::find_if(current.begin(), current.end(), [&](const auto& entry) {
+    const bool free = std::find(free_keys.begin(), free_keys.end(), entry.first) != free_keys.end();
+    const auto original = stored.find(entry.first);
+    return !free && (original == stored.end() || original->second != entry.second);
+  });
+  if (changed == current.end()) return std::nullopt;
+  const auto original = stored.find(changed->first);
+  return DifferingSetting{changed->first, changed->second,
+                          original == stored.end() ? "(none)" : original->second};
+}
+
 RunFolder::RunFolder(std::filesystem::path path, std::string program)
     : path_(std::move(path)),
       program_(std::move(program)),
@@ -76,18 +91,11 @@ void RunFolder::RequireConfigUnchanged(const Config& config, const ConfigSchema&
 void RunFolder::RequireConfigUnchanged(const Config& config, const Config& recorded,
                                        const std::string& source,
                                        const std::vector<std::string>& free_keys) const {
-  const std::map<std::string, std::string> stored = FlatValues(recorded);
-  const std::map<std::string, std::string> current = FlatValues(config);
-  const auto changed = std::find_if(current.begin(), current.end(), [&](const auto& entry) {
-    const bool free = std::find(free_keys.begin(), free_keys.end(), entry.first) != free_keys.end();
-    const auto original = stored.find(entry.first);
-    return !free && (original == stored.end() || original->second != entry.second);
-  });
-  if (changed == current.end()) return;
-  const auto original = stored.find(changed->first);
-  throw UserError(path_.string() + ": '" + changed->first + "' = " + changed->second +
-                  " differs from the run's " +
-                  (original == stored.end() ? "(none)" : original->second) + " (" + source +
+  const std::optional<DifferingSetting> changed =
+      FirstDifferingSetting(config, recorded, free_keys);
+  if (!changed) return;
+  throw UserError(path_.string() + ": '" + changed->key + "' = " + changed->value +
+                  " differs from the run's " + changed->recorded_value + " (" + source +
                   "); a run continues with its configuration");
 }
 

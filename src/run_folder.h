@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,18 @@
 #include "src/run_lock.h"
 
 namespace colav {
+
+/// A setting whose value differs between two configurations.
+struct DifferingSetting {
+  std::string key;
+  std::string value;           ///< in the configuration at hand
+  std::string recorded_value;  ///< in the recorded one; "(none)" when it lacks the key
+};
+
+/// The first key (in name order) whose value in `config` differs from `recorded`'s, `free_keys`
+/// (settings that do not change results) aside; none when they agree.
+std::optional<DifferingSetting> FirstDifferingSetting(const Config& config, const Config& recorded,
+                                                      const std::vector<std::string>& free_keys);
 
 class RunFolder {
  public:

@@ -1,5 +1,6 @@
 // evaluate: runs trained policies with deterministic actions on the shared test scenarios (or on
 // scenario files) and writes episodes.csv, summary.json, summary.md and trajectory figures.
+#include <fmt/format.h>
 #include <spdlog/spdlog.h>
 
 #include <CLI/CLI.hpp>
@@ -8,6 +9,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <map>
 
 #include "env/environment_config.h"
 #include "env/observation_settings.h"
@@ -17,8 +19,10 @@
 #include "eval/evaluation_episodes.h"
 #include "eval/evaluation_report.h"
 #include "eval/policy.h"
+#include "eval/policy_fingerprint.h"
 #include "eval/replay/replay_page.h"
 #include "eval/replay/replay_recorder.h"
+#include "eval/reused_episodes.h"
 #include "eval/safe_name.h"
 #include "eval/trajectory_figure.h"
 #include "src/atomic_file.h"
@@ -128,6 +132,61 @@ std::vector<std::vector<EpisodeOutcome>> RunWithProgress(
                               [&](int finished, int) { progress.Update(finished); });
   progress.Finish();
   return outcomes;
+}
+
+// Settings that change no test episode: an earlier evaluation that differs only in them may lend
+// its episodes (--reuse).
+const std::vector<std::string> kSettingsBesideEpisodes = {
+    "eval.threads", "eval.trajectory_scenarios", "eval.trajectory_starts",
+    "eval.scenario_file_figures"};
+
+// outcomes[m][e] of every policy: the metrics `reusable` holds for it, else its episodes run.
+std::vector<std::vector<EpisodeOutcome>> RunUnlessReusable(
+    const std::vector<Policy>& policies, const std::vector<EvaluationEpisode>& episodes,
+    const ReusableEpisodes& reusable, const EnvironmentConfig& env_config, int threads) {
+  std::vector<std::vector<EpisodeOutcome>> outcomes(policies.size());
+  std::vector<Policy> to_run;
+  std::vector<std::size_t> run_index;
+  for (std::size_t m = 0; m < policies.size(); ++m) {
+    const auto taken = reusable.by_model.find(policies[m].name());
+    if (taken == reusable.by_model.end()) {
+      to_run.push_back(policies[m]);
+      run_index.push_back(m);
+      continue;
+    }
+    for (const EpisodeMetrics& metrics : taken->second)
+      outcomes[m].emplace_back().metrics = metrics;
+  }
+  if (to_run.empty()) return outcomes;
+  auto ran = RunWithProgress(to_run, episodes, env_config, threads, "evaluate");
+  for (std::size_t i = 0; i < run_index.size(); ++i) outcomes[run_index[i]] = std::move(ran[i]);
+  return outcomes;
+}
+
+// What --reuse FOLDER lends this evaluation (nothing without the flag).
+ReusableEpisodes LookForReusableEpisodes(const std::string& folder, const Config& config,
+                                         const ConfigSchema& schema,
+                                         const std::vector<Policy>& policies,
+                                         const std::vector<std::string>& fingerprints,
+                                         const std::vector<EvaluationEpisode>& episodes) {
+  if (folder.empty()) return {};
+  std::map<std::string, std::string> by_name;
+  for (std::size_t m = 0; m < policies.size(); ++m) by_name[policies[m].name()] = fingerprints[m];
+  return FindReusableEpisodes(folder, config, schema, kSettingsBesideEpisodes, episodes, by_name);
+}
+
+void LogReuse(const std::string& folder, const ReusableEpisodes& reusable, std::size_t models) {
+  if (folder.empty()) return;
+  if (reusable.by_model.empty()) {
+    spdlog::info("--reuse: nothing taken ({})", reusable.why_none);
+    return;
+  }
+  std::vector<std::string> names;
+  for (const auto& [name, metrics] : reusable.by_model) names.push_back(name);
+  spdlog::info(
+      "--reuse: the episodes of {} of {} model(s) taken from {} (same settings, scenarios and "
+      "policy files): {}",
+      names.size(), models, folder, fmt::format("{}", fmt::join(names, ", ")));
 }
 
 std::vector<std::vector<EpisodeMetrics>> MetricsOf(
@@ -326,6 +385,15 @@ int Evaluate(int argc, char** argv) {
                "also replay every collision, name the obstacle hit, and search 1,065 manoeuvres "
                "from the step it came within 150 m and from 10, 30 and 60 s before the contact: "
                "OUT/collisions.csv, OUT/collisions.md");
+  std::string reuse;
+  app.add_option("--reuse", reuse,
+                 "take the test episodes of each model that an earlier evaluation in DIR (--out's "
+                 "own folder too) ran under the same settings, on the same scenarios, from the "
+                 "same policy file (its bytes and sidecar unchanged) instead of running them "
+                 "again; the outputs are those of a full run. Needs --trajectories 0, without "
+                 "--replay and --analyse-collisions, which need the runs themselves")
+      ->type_name("DIR")
+      ->excludes(scenario_option);
   AddNumberFlag(app, "--replay-first", replay_choice.first,
                 "with --replay: the first this many test scenarios", 0, 100000);
   AddNumberFlag(app, "--replay-collisions", replay_choice.collided,
@@ -343,6 +411,12 @@ int Evaluate(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const Config config = config_flags.Resolve();
   const EvaluateOptions options = binding.Read(config);
+  if (!reuse.empty() &&
+      (options.trajectory_scenarios > 0 || replay_choice.enabled || analyse_collisions)) {
+    throw UserError(
+        "--reuse takes episodes without their runs: give --trajectories 0, and neither --replay "
+        "nor --analyse-collisions");
+  }
 
   const auto start = std::chrono::steady_clock::now();
   const int threads = ThreadCountOrAllCores(options.threads);
@@ -356,16 +430,22 @@ int Evaluate(int argc, char** argv) {
   const std::vector<EvaluationEpisode> episodes =
       on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
                : TestEpisodes(seed, options.episodes);
+  std::vector<std::string> fingerprints;
+  for (const Policy& policy : policies) fingerprints.push_back(PolicyFingerprint(policy.path()));
+  // Read before the folder is prepared: --reuse may name --out, whose files a rerun replaces.
+  const ReusableEpisodes reusable =
+      LookForReusableEpisodes(reuse, config, binding.Schema(), policies, fingerprints, episodes);
   const RunFolder folder = RunFolder::Create(out, "evaluate");
   folder.StartNewRun({"summary.json"}, kEvaluationOutputs, overwrite,
                      "replace it with --overwrite");
   InitLogging("evaluate", folder.LogPath(), false);
+  LogReuse(reuse, reusable, policies.size());
   folder.WriteResolvedConfig(config);
   spdlog::info("evaluating {} model(s) on {} {}", policies.size(), episodes.size(),
                on_files ? "scenario files" : "test scenarios");
   const std::vector<std::string> settings = ObservationSettingsLines(policies, options.env);
 
-  const auto outcomes = RunWithProgress(policies, episodes, options.env, threads, "evaluate");
+  const auto outcomes = RunUnlessReusable(policies, episodes, reusable, options.env, threads);
   const double evaluation_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::vector<std::string> model_names;
@@ -379,6 +459,7 @@ int Evaluate(int argc, char** argv) {
       model_names, model_policies, MetricsOf(outcomes));
   for (std::size_t m = 0; m < policies.size(); ++m) {
     report.models[m].observation_settings = settings[m];
+    report.models[m].policy_fingerprint = fingerprints[m];
   }
   WriteTextFileAtomically(folder.path() / "episodes.csv",
                           EpisodeTable(model_names, episodes, outcomes));

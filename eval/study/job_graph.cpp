@@ -381,8 +381,9 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
     job.args.insert(job.args.end(),
                     {"--episodes", std::to_string(group.episodes), "--seed",
                      std::to_string(group.seed), "--trajectories", "0", "--out", dir.string(),
-                     // A rerun (models added to the study) replaces the previous evaluation.
-                     "--overwrite"});
+                     // A rerun (models added to the study) replaces the previous evaluation,
+                     // taking its episodes of the models whose policy files are unchanged.
+                     "--overwrite", "--reuse", dir.string()});
     AddJob(jobs, job);
   }
   return jobs;

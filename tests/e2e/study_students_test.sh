@@ -3,8 +3,8 @@
 # option is refused before any work; a memory relieved by the baseline at a stall, distilled into
 # one network per seed (build/bin/distill_policy), then fine-tuned by train_ppo from each student,
 # is evaluated and reported with the runs; a rerun skips every job, and one whose options changed
-# is refused; a study stopped during a distillation exits 130 and the same command continues it
-# from its state.
+# is refused; a study that gains a kind evaluates only the new models' episodes; a study stopped
+# during a distillation exits 130 and the same command continues it from its state.
 #   study_students_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
 # shellcheck source=tests/e2e/study_test_lib.sh
@@ -89,6 +89,25 @@ study_skips_all 15 "$WORK/tiny.yaml" --out "$WORK/run"
 sed -e 's/epochs: 1,/epochs: 2,/' "$WORK/tiny.yaml" >"$WORK/changed.yaml"
 study_refuses changed "job students/taught/seed_0: the finished run in $WORK/run/students/taught/seed_0 has settings.epochs = 1, the study asks for 2" \
   "$WORK/changed.yaml" --out "$WORK/run"
+
+# A study that gains a kind of fine-tune runs it (2 runs, a figure) and evaluates again, taking
+# the other models' episodes from the evaluation before (evaluate --reuse), unchanged.
+cp -r "$WORK/run" "$WORK/grown"
+sed -n '/^evaluation:/q;p' "$WORK/tiny.yaml" >"$WORK/grown.yaml"
+cat >>"$WORK/grown.yaml" <<'YAML'
+  narrower:
+    student: taught
+    steps: 4096
+    set: {policy.init_keeps_log_std: false, policy.log_std_init: -2.0}
+YAML
+grep "^evaluation:" "$WORK/tiny.yaml" >>"$WORK/grown.yaml"
+"$BIN/study" "$WORK/grown.yaml" --out "$WORK/grown" >"$WORK/grown.out" 2>"$WORK/grown.err" ||
+  { tail "$WORK/grown.err"; fail "the grown study failed"; }
+grep -q "4 jobs run, 14 skipped" "$WORK/grown.err" || { cat "$WORK/grown.err"; fail "grown jobs"; }
+grep -q -- "--reuse: the episodes of 10 of 12 model(s) taken from" \
+  "$WORK/grown/eval/study/evaluate.log" || fail "the grown study ran every model again"
+diff <(grep -v "^narrower" "$WORK/grown/eval/study/episodes.csv") \
+  "$WORK/run/eval/study/episodes.csv" >/dev/null || fail "the taken episodes changed"
 
 # Stopped during a longer distillation, then continued by the same command.
 sed -e 's/iterations: 2,/iterations: 40,/' "$WORK/tiny.yaml" >"$WORK/long.yaml"

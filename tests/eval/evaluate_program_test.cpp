@@ -121,6 +121,48 @@ TEST_F(EvaluateProgramTest, BadArgumentsAreOneLineErrors) {
                                      Path("nowhere.yaml") + " --out " + Path("noscenario"),
                                  folder_),
                      Path("nowhere.yaml"));
+  ExpectOneLineError(RunEvaluate("--policy " + Path("reactive.pt") + " --reuse " + Path("x") +
+                                     " --out " + Path("reuse_figures"),
+                                 folder_),
+                     "--reuse takes episodes without their runs");
+}
+
+// --reuse takes an earlier evaluation's episodes of a model whose file is unchanged, runs the
+// others, and writes what a full evaluation writes; a changed file is run again.
+TEST_F(EvaluateProgramTest, ReusedEpisodesGiveTheOutputsOfAFullRun) {
+  const std::string both = "--policy " + Path("reactive.pt") + " --policy " + Path("constant.pt");
+  const std::string settings = " --episodes 3 --trajectories 0 --set env.max_steps=300";
+  ASSERT_EQ(RunEvaluate(both + settings + " --out " + Path("full"), folder_).status, 0);
+  ASSERT_EQ(
+      RunEvaluate("--policy " + Path("reactive.pt") + settings + " --out " + Path("grown"), folder_)
+          .status,
+      0);
+  // The study's way: the same folder grows by a model, reusing itself.
+  const CommandResult grown = RunEvaluate(
+      both + settings + " --reuse " + Path("grown") + " --out " + Path("grown") + " --overwrite",
+      folder_);
+  ASSERT_EQ(grown.status, 0) << grown.err;
+  for (const char* file : {"episodes.csv", "summary.json", "summary.md", "config.yaml"}) {
+    EXPECT_EQ(ReadFile(folder_ / "grown" / file), ReadFile(folder_ / "full" / file)) << file;
+  }
+  const std::string log = ReadFile(folder_ / "grown" / "evaluate.log");
+  EXPECT_NE(log.find("--reuse: the episodes of 1 of 2 model(s) taken from " + Path("grown") +
+                     " (same settings, scenarios and policy files): reactive"),
+            std::string::npos)
+      << log;
+  // A policy file replaced under the same name is run again, not taken.
+  tp::SavePolicy(tp::ReactivePolicy(2), folder_ / "reactive.pt");
+  const CommandResult changed = RunEvaluate(
+      both + settings + " --reuse " + Path("full") + " --out " + Path("changed"), folder_);
+  ASSERT_EQ(changed.status, 0) << changed.err;
+  const std::string changed_log = ReadFile(folder_ / "changed" / "evaluate.log");
+  EXPECT_NE(changed_log.find("the episodes of 1 of 2 model(s) taken from " + Path("full") +
+                             " (same settings, scenarios and policy files): constant"),
+            std::string::npos)
+      << changed_log;
+  ASSERT_EQ(RunEvaluate(both + settings + " --out " + Path("changed_full"), folder_).status, 0);
+  EXPECT_EQ(ReadFile(folder_ / "changed" / "episodes.csv"),
+            ReadFile(folder_ / "changed_full" / "episodes.csv"));
 }
 
 }  // namespace
