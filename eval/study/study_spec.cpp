@@ -506,28 +506,22 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   if (root["evaluation"] && root["evaluation"]["compare_to"]) {
     check_compared_with(spec.evaluation.compare_to, "evaluation.compare_to");
   }
+  // A model's own compare_to (at `section`.<name>.compare_to) names another model of the study.
+  const auto check_own_compare_to = [&](const std::string& section, const std::string& name,
+                                        const std::string& compare_to, const std::string& kind) {
+    if (compare_to.empty()) return;
+    const std::string key = section + "." + name + ".compare_to";
+    if (compare_to == name) reader.Fail(key, "a " + kind + " is not compared with itself");
+    check_compared_with(compare_to, key);
+  };
   for (const PpoConfigSpec& config : spec.ppo_configs) {
-    if (config.compare_to.empty()) continue;
-    const std::string key = "ppo.configs." + config.name + ".compare_to";
-    if (config.compare_to == config.name) {
-      reader.Fail(key, "a configuration is not compared with itself");
-    }
-    check_compared_with(config.compare_to, key);
+    check_own_compare_to("ppo.configs", config.name, config.compare_to, "configuration");
   }
   for (const StudentSpec& student : spec.students) {
-    if (student.compare_to.empty()) continue;
-    const std::string key = "students." + student.name + ".compare_to";
-    if (student.compare_to == student.name)
-      reader.Fail(key, "a student is not compared with itself");
-    check_compared_with(student.compare_to, key);
+    check_own_compare_to("students", student.name, student.compare_to, "student");
   }
   for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
-    if (fine_tune.compare_to.empty()) continue;
-    const std::string key = "fine_tunes." + fine_tune.name + ".compare_to";
-    if (fine_tune.compare_to == fine_tune.name) {
-      reader.Fail(key, "a fine-tune is not compared with itself");
-    }
-    check_compared_with(fine_tune.compare_to, key);
+    check_own_compare_to("fine_tunes", fine_tune.name, fine_tune.compare_to, "fine-tune");
   }
   return spec;
 }

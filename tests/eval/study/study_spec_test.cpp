@@ -209,15 +209,12 @@ students:
 TEST(StudySpecTest, StudiesFineTuneStudents) {
   const TemporaryFolder folder;
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
-  seeds: 4
-  set: {policy.recurrent_size: 8}
+  seeds: 3
   configs:
     a: {}
-    memory: {}
-ensembles:
-  pair: {members: [a, memory], count: 3}
+    memory: {set: {policy.recurrent_size: 8}}
 students:
-  taught: {teacher: pair, start: memory}
+  taught: {teacher: a, start: memory}
 fine_tunes:
   tuned: {student: taught, steps: 1000, set: {ppo.learning_rate: 2e-5, policy.log_std_init: -1}}
   plain: {student: taught, compare_to: tuned}
@@ -225,20 +222,20 @@ fine_tunes:
   ASSERT_EQ(spec.fine_tunes.size(), 2U);
   const FineTuneSpec& tuned = spec.fine_tunes[0];
   EXPECT_EQ(tuned.student, "taught");
-  EXPECT_EQ(tuned.count, 3);  // taught's students
+  EXPECT_EQ(tuned.count, 3);  // taught's students, one per seed of a
   EXPECT_EQ(tuned.steps, 1000);
   EXPECT_EQ(tuned.overrides,
             (std::vector<std::string>{"ppo.learning_rate=2e-5", "policy.log_std_init=-1"}));
   EXPECT_EQ(spec.fine_tunes[1].steps, 0);  // the start configuration's
   const std::vector<SeededModel> models = spec.SeededModels();
-  ASSERT_EQ(models.size(), 6U);  // 2 configurations, an ensemble, a student, 2 fine-tunes
-  EXPECT_EQ(models[4].name, "tuned");
-  EXPECT_EQ(models[4].seeds, 3);
-  EXPECT_EQ(models[5].compare_to, "tuned");
+  ASSERT_EQ(models.size(), 5U);  // 2 configurations, a student, 2 fine-tunes
+  EXPECT_EQ(models[3].name, "tuned");
+  EXPECT_EQ(models[3].seeds, 3);
+  EXPECT_EQ(models[4].compare_to, "tuned");
   const StudySpec two_seeds = SelectConfigs(spec, {}, 2);
   ASSERT_EQ(two_seeds.fine_tunes.size(), 2U);
   EXPECT_EQ(two_seeds.fine_tunes[0].count, 2);
-  EXPECT_TRUE(SelectConfigs(spec, {"memory"}, 0).fine_tunes.empty());  // no pair, no student
+  EXPECT_TRUE(SelectConfigs(spec, {"memory"}, 0).fine_tunes.empty());  // no teacher, no student
 }
 
 TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
