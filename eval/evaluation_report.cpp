@@ -165,6 +165,7 @@ nlohmann::ordered_json EvaluationReportJson(const EvaluationReport& report) {
   nlohmann::ordered_json json;
   json["scenarios"] = report.scenarios;
   json["seed"] = report.seed ? nlohmann::ordered_json(*report.seed) : nlohmann::ordered_json();
+  json["evaluator_build_id"] = report.evaluator_build_id;
   json["models"] = nlohmann::ordered_json::array();
   for (const ModelSummary& model : report.models) json["models"].push_back(ModelJson(model));
   json["paired_differences"] = nlohmann::ordered_json::array();

@@ -18,6 +18,8 @@ struct EvaluationReport {
   std::optional<std::uint64_t> seed;  ///< master seed of the test scenarios
   std::vector<ModelSummary> models;
   std::vector<PairedDifference> differences;  ///< every pair of models, in model order
+  /// ProgramBuildId of the evaluate that ran it (src/build_id.h); empty when not told.
+  std::string evaluator_build_id{};
 };
 
 /// The report of per-model episode metrics episodes[m] (all models on the same episodes): the
@@ -28,11 +30,11 @@ EvaluationReport MakeEvaluationReport(const std::string& scenarios,
                                       const std::vector<std::string>& policies,
                                       const std::vector<std::vector<EpisodeMetrics>>& episodes);
 
-/// summary.json: {"scenarios", "seed", "models": [{"name", "policy", "policy_fingerprint",
-/// "observation_settings",
-/// "episodes", "goals_reached", "collisions", "truncated", "metrics": {key: {"n", "mean", "sd",
-/// "low", "high", "half_width", "in_range": {"method", "low", "high"}}}}], "paired_differences":
-/// [{"first", "second", "metrics": {...}}]}. low/high are Student-t; in_range is the interval that
+/// summary.json: {"scenarios", "seed", "evaluator_build_id", "models": [{"name", "policy",
+/// "policy_fingerprint", "observation_settings", "episodes", "goals_reached", "collisions",
+/// "truncated", "metrics": {key: {"n", "mean", "sd", "low", "high", "half_width", "in_range":
+/// {"method", "low", "high"}}}}], "paired_differences": [{"first", "second", "metrics":
+/// {...}}]}. low/high are Student-t; in_range is the interval that
 /// stays in the metric's range. Fractions (progress, collision, goal) stay fractions.
 nlohmann::ordered_json EvaluationReportJson(const EvaluationReport& report);
 

@@ -8,7 +8,6 @@
 
 #include "eval/episode_table.h"
 #include "src/csv_table.h"
-#include "src/error.h"
 #include "src/run_folder.h"
 
 namespace colav {
@@ -38,15 +37,18 @@ EpisodeMetrics MetricsOfRow(const std::vector<std::string>& row) {
   return metrics;
 }
 
-// Why the folder's configuration and scenarios do not allow taking its episodes; none when
-// they do.
-std::optional<std::string> Mismatch(const std::filesystem::path& folder, const Config& config,
-                                    const ConfigSchema& schema,
-                                    const std::vector<std::string>& free_keys,
+// Why the folder's evaluation was not run as `planned` is (scenarios aside); none when it was.
+std::optional<std::string> Mismatch(const std::filesystem::path& folder,
+                                    const PlannedEvaluation& planned,
                                     const nlohmann::json& summary) {
   if (summary.value("scenarios", "") != "test") return "it did not run the test scenarios";
-  const Config recorded = Config::Load(schema, (folder / "config.yaml").string());
-  if (const auto differing = FirstDifferingSetting(config, recorded, free_keys)) {
+  const std::string build_id = summary.value("evaluator_build_id", "");
+  if (build_id != planned.build_id) {
+    return "another build of evaluate ran it (build id '" + build_id + "', this one's '" +
+           planned.build_id + "')";
+  }
+  const Config recorded = Config::Load(planned.schema, (folder / "config.yaml").string());
+  if (const auto differing = FirstDifferingSetting(planned.config, recorded, planned.free_keys)) {
     return "it ran with " + differing->key + " = " + differing->recorded_value + ", not " +
            differing->value;
   }
@@ -82,10 +84,8 @@ std::map<std::string, std::vector<EpisodeMetrics>> EpisodesOfUnchangedModels(
 
 }  // namespace
 
-ReusableEpisodes FindReusableEpisodes(const std::filesystem::path& folder, const Config& config,
-                                      const ConfigSchema& schema,
-                                      const std::vector<std::string>& free_keys,
-                                      const std::vector<EvaluationEpisode>& episodes,
+ReusableEpisodes FindReusableEpisodes(const std::filesystem::path& folder,
+                                      const PlannedEvaluation& planned,
                                       const std::map<std::string, std::string>& fingerprints) {
   ReusableEpisodes reusable;
   const std::filesystem::path summary_path = folder / "summary.json";
@@ -96,7 +96,7 @@ ReusableEpisodes FindReusableEpisodes(const std::filesystem::path& folder, const
   try {
     std::ifstream in(summary_path);
     const nlohmann::json summary = nlohmann::json::parse(in);
-    if (const auto mismatch = Mismatch(folder, config, schema, free_keys, summary)) {
+    if (const auto mismatch = Mismatch(folder, planned, summary)) {
       reusable.why_none = folder.string() + ": " + *mismatch;
       return reusable;
     }
@@ -106,7 +106,7 @@ ReusableEpisodes FindReusableEpisodes(const std::filesystem::path& folder, const
       return reusable;
     }
     reusable.by_model =
-        EpisodesOfUnchangedModels(summary, table, ScenarioKeys(episodes), fingerprints);
+        EpisodesOfUnchangedModels(summary, table, ScenarioKeys(planned.episodes), fingerprints);
   } catch (const std::exception& error) {  // a malformed or half-written earlier evaluation
     reusable.by_model.clear();
     reusable.why_none = error.what();

@@ -26,6 +26,7 @@
 #include "eval/safe_name.h"
 #include "eval/trajectory_figure.h"
 #include "src/atomic_file.h"
+#include "src/build_id.h"
 #include "src/cli.h"
 #include "src/error.h"
 #include "src/logging.h"
@@ -172,7 +173,9 @@ ReusableEpisodes LookForReusableEpisodes(const std::string& folder, const Config
   if (folder.empty()) return {};
   std::map<std::string, std::string> by_name;
   for (std::size_t m = 0; m < policies.size(); ++m) by_name[policies[m].name()] = fingerprints[m];
-  return FindReusableEpisodes(folder, config, schema, kSettingsBesideEpisodes, episodes, by_name);
+  const PlannedEvaluation planned{config, schema, kSettingsBesideEpisodes, ProgramBuildId(),
+                                  episodes};
+  return FindReusableEpisodes(folder, planned, by_name);
 }
 
 void LogReuse(const std::string& folder, const ReusableEpisodes& reusable, std::size_t models) {
@@ -461,6 +464,7 @@ int Evaluate(int argc, char** argv) {
     report.models[m].observation_settings = settings[m];
     report.models[m].policy_fingerprint = fingerprints[m];
   }
+  report.evaluator_build_id = ProgramBuildId();
   WriteTextFileAtomically(folder.path() / "episodes.csv",
                           EpisodeTable(model_names, episodes, outcomes));
   WriteTextFileAtomically(folder.path() / "summary.json",

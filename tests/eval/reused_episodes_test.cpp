@@ -63,14 +63,17 @@ class ReusedEpisodesTest : public ::testing::Test {
   void WriteEvaluation(const Config& config, const std::string& a, const std::string& b) {
     WriteFile(folder_ / "config.yaml", config.ToYaml());
     WriteFile(folder_ / "episodes.csv", EpisodeTable({"a", "b"}, episodes_, outcomes_));
-    WriteFile(
-        folder_ / "summary.json",
-        R"({"scenarios": "test", "seed": 1, "models": [{"name": "a", "policy_fingerprint": ")" + a +
-            R"("}, {"name": "b", "policy_fingerprint": ")" + b + R"("}]})");
+    WriteFile(folder_ / "summary.json",
+              R"({"scenarios": "test", "seed": 1, "evaluator_build_id": "b1d", "models": [)"
+              R"({"name": "a", "policy_fingerprint": ")" +
+                  a + R"("}, {"name": "b", "policy_fingerprint": ")" + b + R"("}]})");
   }
   ReusableEpisodes Find(const Config& config, const std::map<std::string, std::string>& wanted,
-                        const std::vector<EvaluationEpisode>& episodes) const {
-    return FindReusableEpisodes(folder_.path(), config, TinySchema(), {"eval.threads"}, episodes,
+                        const std::vector<EvaluationEpisode>& episodes,
+                        const std::string& build_id = "b1d") const {
+    const ConfigSchema schema = TinySchema();
+    const std::vector<std::string> free_keys = {"eval.threads"};
+    return FindReusableEpisodes(folder_.path(), {config, schema, free_keys, build_id, episodes},
                                 wanted);
   }
   TemporaryFolder folder_;
@@ -103,6 +106,11 @@ TEST_F(ReusedEpisodesTest, OtherSettingsOrScenariosLendNothing) {
   std::vector<EvaluationEpisode> reseeded = episodes_;
   reseeded[1].seed = 13;
   EXPECT_TRUE(Find(config, both, reseeded).by_model.empty());
+  // Another build of evaluate may simulate or act otherwise.
+  const ReusableEpisodes rebuilt = Find(config, both, episodes_, "c0de");
+  EXPECT_TRUE(rebuilt.by_model.empty());
+  EXPECT_NE(rebuilt.why_none.find("another build of evaluate"), std::string::npos)
+      << rebuilt.why_none;
 }
 
 TEST_F(ReusedEpisodesTest, AMissingOrBrokenEvaluationLendsNothingAndSaysWhy) {
