@@ -194,9 +194,8 @@ void AddFineTuneJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
     const PpoConfigSpec& start = *spec.FindConfig(student.start);
     for (int k = 0; k < fine_tune.count; ++k) {
       const std::filesystem::path student_policy = StudentPolicyFile(out, student.name, k);
-      StudyJob job = PpoRunJob(spec, start, spec.StartSeed(student, k),
-                               fine_tune.steps > 0 ? fine_tune.steps : spec.StepsOf(start), out,
-                               FineTuneFolder(fine_tune.name, k).string(), vae_jobs);
+      StudyJob job = PpoRunJob(spec, start, spec.StartSeed(student, k), spec.StepsOf(fine_tune),
+                               out, FineTuneFolder(fine_tune.name, k).string(), vae_jobs);
       AppendOverrides(job.args, {"policy.init=" + student_policy.string()});
       AppendOverrides(job.args, fine_tune.overrides);
       job.check_configuration = k == 0;

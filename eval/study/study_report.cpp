@@ -457,8 +457,7 @@ void FineTuneSection(std::ostringstream& md, nlohmann::json& json, const StudySp
         "policy.init) with the settings of the run it started from, then the kind's own:\n\n";
   for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
     const StudentSpec& student = *spec.FindStudent(fine_tune.student);
-    const std::int64_t steps =
-        fine_tune.steps > 0 ? fine_tune.steps : spec.StepsOf(*spec.FindConfig(student.start));
+    const std::int64_t steps = spec.StepsOf(fine_tune);
     md << fmt::format("- {}: {} of {}, {} steps with the settings of {}{}\n", fine_tune.name,
                       fine_tune.count, student.name, steps, student.start,
                       fine_tune.overrides.empty()

@@ -157,6 +157,12 @@ struct StudySpec {
   std::int64_t StepsOf(const PpoConfigSpec& config) const {
     return config.steps > 0 ? config.steps : ppo_steps;
   }
+  /// The environment steps of `fine_tune`'s runs: its own, else its students' start
+  /// configuration's.
+  std::int64_t StepsOf(const FineTuneSpec& fine_tune) const {
+    return fine_tune.steps > 0 ? fine_tune.steps
+                               : StepsOf(*FindConfig(FindStudent(fine_tune.student)->start));
+  }
   /// The PPO configurations, then the ensemble kinds, the kinds of student and of fine-tuned
   /// student, in file order.
   std::vector<SeededModel> SeededModels() const;
