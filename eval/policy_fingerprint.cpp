@@ -8,12 +8,11 @@
 
 #include "eval/policy.h"
 #include "src/error.h"
+#include "src/fnv1a.h"
 
 namespace colav {
 namespace {
 
-constexpr std::uint64_t kFnvOffsetBasis = 0xCBF29CE484222325ULL;
-constexpr std::uint64_t kFnvPrime = 0x100000001B3ULL;
 constexpr std::size_t kReadChunkBytes = 1 << 16;
 
 // Continues the FNV-1a hash `hash` over the bytes of `file`.
@@ -22,10 +21,7 @@ std::uint64_t HashFileBytes(const std::filesystem::path& file, std::uint64_t has
   if (!in) throw UserError(file.string() + ": cannot be read");
   std::array<char, kReadChunkBytes> chunk{};
   while (in.read(chunk.data(), chunk.size()) || in.gcount() > 0) {
-    for (std::streamsize i = 0; i < in.gcount(); ++i) {
-      hash ^= static_cast<unsigned char>(chunk[static_cast<std::size_t>(i)]);
-      hash *= kFnvPrime;
-    }
+    hash = Fnv1a({chunk.data(), static_cast<std::size_t>(in.gcount())}, hash);
   }
   return hash;
 }
@@ -33,7 +29,7 @@ std::uint64_t HashFileBytes(const std::filesystem::path& file, std::uint64_t has
 }  // namespace
 
 std::string PolicyFingerprint(const std::filesystem::path& policy) {
-  std::uint64_t hash = HashFileBytes(policy, kFnvOffsetBasis);
+  std::uint64_t hash = HashFileBytes(policy, kFnv1aOffsetBasis);
   const std::filesystem::path sidecar = SidecarPath(policy);
   if (std::filesystem::is_regular_file(sidecar)) hash = HashFileBytes(sidecar, hash);
   return fmt::format("fnv1a64:{:016x}", hash);

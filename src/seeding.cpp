@@ -1,5 +1,7 @@
 #include "src/seeding.h"
 
+#include "src/fnv1a.h"
+
 namespace colav {
 namespace {
 
@@ -10,15 +12,6 @@ std::uint64_t SplitMix64(std::uint64_t x) {
   x = (x ^ (x >> 30U)) * 0xBF58476D1CE4E5B9ULL;
   x = (x ^ (x >> 27U)) * 0x94D049BB133111EBULL;
   return x ^ (x >> 31U);
-}
-
-std::uint64_t Fnv1a(std::string_view text) {
-  std::uint64_t hash = 0xCBF29CE484222325ULL;
-  for (const char c : text) {
-    hash ^= static_cast<unsigned char>(c);
-    hash *= 0x100000001B3ULL;
-  }
-  return hash;
 }
 
 }  // namespace
