@@ -547,9 +547,73 @@ void KeepTaughtStudents(StudySpec& spec) {
   spec.fine_tunes = kept_fine_tunes;
 }
 
+// Whether `names` holds `name`.
+bool Holds(const std::set<std::string>& names, const std::string& name) {
+  return names.count(name) > 0;
+}
+
+// The first of `names` that is no model of `spec`, if any.
+std::optional<std::string> FirstMissingModel(const StudySpec& spec,
+                                             const std::vector<std::string>& names) {
+  const std::vector<SeededModel> models = spec.SeededModels();
+  for (const std::string& name : names) {
+    if (std::none_of(models.begin(), models.end(),
+                     [&](const SeededModel& m) { return m.name == name; })) {
+      return name;
+    }
+  }
+  return std::nullopt;
+}
+
+// The models `only` names and the kinds built from them alone: an ensemble all of whose members
+// it holds, a student whose teacher and start it holds, a fine-tune of a student it holds.
+std::set<std::string> NamedAndBuiltFrom(const StudySpec& spec,
+                                        const std::vector<std::string>& only) {
+  std::set<std::string> kept(only.begin(), only.end());
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    if (std::all_of(ensemble.members.begin(), ensemble.members.end(),
+                    [&](const std::string& member) { return Holds(kept, member); })) {
+      kept.insert(ensemble.name);
+    }
+  }
+  for (const StudentSpec& student : spec.students) {
+    if (Holds(kept, student.teacher) && Holds(kept, student.start)) kept.insert(student.name);
+  }
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    if (Holds(kept, fine_tune.student)) kept.insert(fine_tune.name);
+  }
+  return kept;
+}
+
+// `kept` with what its models are built from: a fine-tune's student, a student's teacher and
+// start, an ensemble's members (each kind is built only from kinds listed before it).
+void AddWhatTheyNeed(const StudySpec& spec, std::set<std::string>& kept) {
+  for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
+    if (Holds(kept, fine_tune.name)) kept.insert(fine_tune.student);
+  }
+  for (const StudentSpec& student : spec.students) {
+    if (Holds(kept, student.name)) kept.insert({student.teacher, student.start});
+  }
+  for (const EnsembleSpec& ensemble : spec.ensembles) {
+    if (Holds(kept, ensemble.name)) kept.insert(ensemble.members.begin(), ensemble.members.end());
+  }
+}
+
+template <typename Spec>
+void KeepOnly(std::vector<Spec>& specs, const std::set<std::string>& kept) {
+  specs.erase(std::remove_if(specs.begin(), specs.end(),
+                             [&](const Spec& s) { return !Holds(kept, s.name); }),
+              specs.end());
+}
+
 }  // namespace
 
-StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds) {
+StudySpec SelectModels(StudySpec spec, const std::vector<std::string>& only, int seeds) {
+  if (const auto unknown = FirstMissingModel(spec, only)) {
+    throw UserError("--only " + *unknown +
+                    ": the study has no PPO configuration, ensemble, student or fine-tune of "
+                    "that name");
+  }
   if (seeds > 0) {
     spec.ppo_seeds = seeds;
     for (EnsembleSpec& ensemble : spec.ensembles) {
@@ -561,31 +625,20 @@ StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, in
     KeepTaughtStudents(spec);
   }
   if (only.empty()) return spec;
-  std::vector<PpoConfigSpec> configs;
-  std::set<std::string> used_vaes;
-  for (const std::string& name : only) {
-    const auto config = std::find_if(spec.ppo_configs.begin(), spec.ppo_configs.end(),
-                                     [&](const PpoConfigSpec& c) { return c.name == name; });
-    if (config == spec.ppo_configs.end()) {
-      throw UserError("--only " + name + ": the study has no PPO configuration of that name");
-    }
-    configs.push_back(*config);
-    used_vaes.insert(config->vae);
+  if (const auto unseeded = FirstMissingModel(spec, only)) {
+    throw UserError("--only " + *unseeded + ": --seeds " + std::to_string(seeds) +
+                    " gives none of it (an ensemble it needs takes more training seeds)");
   }
-  spec.ppo_configs = configs;
-  spec.ensembles.erase(
-      std::remove_if(spec.ensembles.begin(), spec.ensembles.end(),
-                     [&](const EnsembleSpec& e) {
-                       return std::any_of(e.members.begin(), e.members.end(), [&](auto& member) {
-                         return std::find(only.begin(), only.end(), member) == only.end();
-                       });
-                     }),
-      spec.ensembles.end());
-  spec.vae_figures = false;  // not needed by any configuration
-  spec.vaes.erase(std::remove_if(spec.vaes.begin(), spec.vaes.end(),
-                                 [&](const VaeSpec& v) { return used_vaes.count(v.name) == 0; }),
-                  spec.vaes.end());
-  KeepTaughtStudents(spec);
+  std::set<std::string> kept = NamedAndBuiltFrom(spec, only);
+  AddWhatTheyNeed(spec, kept);
+  KeepOnly(spec.ppo_configs, kept);
+  KeepOnly(spec.ensembles, kept);
+  KeepOnly(spec.students, kept);
+  KeepOnly(spec.fine_tunes, kept);
+  std::set<std::string> used_vaes;
+  for (const PpoConfigSpec& config : spec.ppo_configs) used_vaes.insert(config.vae);
+  KeepOnly(spec.vaes, used_vaes);
+  spec.vae_figures = false;  // not needed by any model
   return spec;
 }
 

@@ -182,11 +182,14 @@ struct StudySpec {
 /// The study of `path`; relative reference-agent paths are taken from the study file's folder.
 StudySpec LoadStudySpec(const std::filesystem::path& path);
 
-/// The study restricted to the PPO configurations `only` (and the VAEs they use, the ensembles
-/// all of whose members it keeps, the students whose teacher and start it keeps, the fine-tunes
-/// of the students it keeps, no VAE figures), with `seeds` training seeds when > 0 (and as many
-/// ensembles of each kind as they give, none when they give none; a student per teacher seed, a
-/// fine-tune per student). An unknown name is a UserError.
-StudySpec SelectConfigs(StudySpec spec, const std::vector<std::string>& only, int seeds);
+/// The study restricted to the models `only` names (PPO configurations, ensemble kinds, kinds of
+/// student or of fine-tune), the kinds built from the named ones alone (an ensemble all of whose
+/// members it names, a student whose teacher and start it names or builds, a fine-tune of a
+/// student it keeps) and what all of these are built from (members, teachers, starts, students,
+/// VAEs), without VAE figures; all of it when `only` is empty. With `seeds` > 0, that many
+/// training seeds (and as many ensembles of each kind as they give, none when they give none; a
+/// student per teacher seed, a fine-tune per student). A name the study does not have, or has
+/// none of with `seeds`, is a UserError.
+StudySpec SelectModels(StudySpec spec, const std::vector<std::string>& only, int seeds);
 
 }  // namespace colav

@@ -85,7 +85,9 @@ int Study(int argc, char** argv) {
       ->check(CLI::Range(1, 64));
   app.add_option("--seeds", seeds, "training seeds of every PPO configuration (0 .. N-1)")
       ->check(CLI::Range(1, 1000));
-  app.add_option("--only", only, "run only these PPO configurations (and what they need)");
+  app.add_option("--only", only,
+                 "run only these models (PPO configurations, ensembles, students, fine-tunes), "
+                 "what is built from them alone, and what they need");
   app.add_option("--set", overrides, "KEY=VALUE override of every PPO run (train_ppo's keys)");
   app.add_flag("--report", report_only, "only write the report from the finished evaluations");
   app.add_option("--shard", shard_flag,
@@ -99,7 +101,7 @@ int Study(int argc, char** argv) {
   ParseCommandLine(app, argc, argv);
   const StudyShard shard = ResolveShard(shard_flag, environment);
 
-  StudySpec spec = SelectConfigs(LoadStudySpec(study_file), only, seeds);
+  StudySpec spec = SelectModels(LoadStudySpec(study_file), only, seeds);
   // The cores are shared between the jobs: each PPO run steps its worlds on its share (spinning
   // threads beyond the cores would slow every job down); the study file or --set may override.
   const int threads_per_job = std::max(1, cores / jobs);

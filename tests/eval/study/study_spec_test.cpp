@@ -98,11 +98,11 @@ TEST(StudySpecTest, ShippedQuickstartStudyIsValid) {
 
 TEST(StudySpecTest, SelectsConfigurationsAndSeeds) {
   const TemporaryFolder folder;
-  const StudySpec spec = SelectConfigs(LoadStudySpec(WriteStudy(folder, kStudy)), {"baseline"}, 1);
+  const StudySpec spec = SelectModels(LoadStudySpec(WriteStudy(folder, kStudy)), {"baseline"}, 1);
   ASSERT_EQ(spec.ppo_configs.size(), 1U);
   EXPECT_TRUE(spec.vaes.empty());  // the baseline needs no VAE
   EXPECT_EQ(spec.ppo_seeds, 1);
-  EXPECT_NE(UserErrorMessage([&] { SelectConfigs(spec, {"nope"}, 0); }).find("--only nope"),
+  EXPECT_NE(UserErrorMessage([&] { SelectModels(spec, {"nope"}, 0); }).find("--only nope"),
             std::string::npos);
 }
 
@@ -151,11 +151,11 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_EQ(models[3].name, "mixed");
   EXPECT_EQ(models[4].seeds, 2);
   // Fewer seeds, fewer ensembles; a kind whose members are not all kept goes.
-  const StudySpec one_seed = SelectConfigs(spec, {}, 1);
+  const StudySpec one_seed = SelectModels(spec, {}, 1);
   ASSERT_EQ(one_seed.ensembles.size(), 3U);
   EXPECT_EQ(one_seed.ensembles[0].name, "pair");
   EXPECT_EQ(one_seed.ensembles[0].count, 1);
-  EXPECT_TRUE(SelectConfigs(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
+  EXPECT_TRUE(SelectModels(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
 }
 
 // Student k imitates the teacher's seed k and starts from the run ensemble k takes of `start`
@@ -191,17 +191,17 @@ students:
   EXPECT_EQ(models[4].seeds, 2);
   EXPECT_EQ(models[5].compare_to, "taught");
   // Fewer seeds, fewer students; a student whose teacher or start goes, goes.
-  const StudySpec two_seeds = SelectConfigs(spec, {}, 2);
+  const StudySpec two_seeds = SelectModels(spec, {}, 2);
   ASSERT_EQ(two_seeds.students.size(), 2U);
   EXPECT_EQ(two_seeds.students[0].count, 1);
   EXPECT_EQ(two_seeds.students[1].count, 2);
-  const StudySpec without_flat = SelectConfigs(spec, {"a", "memory"}, 0);
+  const StudySpec without_flat = SelectModels(spec, {"a", "memory"}, 0);
   ASSERT_EQ(without_flat.students.size(), 1U);
   EXPECT_EQ(without_flat.students[0].name, "taught");
-  const StudySpec without_a = SelectConfigs(spec, {"memory", "flat"}, 0);
+  const StudySpec without_a = SelectModels(spec, {"memory", "flat"}, 0);
   ASSERT_EQ(without_a.students.size(), 1U);
   EXPECT_EQ(without_a.students[0].name, "from_flat");
-  EXPECT_TRUE(SelectConfigs(spec, {"a", "flat"}, 0).students.empty());
+  EXPECT_TRUE(SelectModels(spec, {"a", "flat"}, 0).students.empty());
 }
 
 // A kind of fine-tune trains each student of a kind further, one per student; it goes with its
@@ -232,10 +232,63 @@ fine_tunes:
   EXPECT_EQ(models[3].name, "tuned");
   EXPECT_EQ(models[3].seeds, 3);
   EXPECT_EQ(models[4].compare_to, "tuned");
-  const StudySpec two_seeds = SelectConfigs(spec, {}, 2);
+  const StudySpec two_seeds = SelectModels(spec, {}, 2);
   ASSERT_EQ(two_seeds.fine_tunes.size(), 2U);
   EXPECT_EQ(two_seeds.fine_tunes[0].count, 2);
-  EXPECT_TRUE(SelectConfigs(spec, {"memory"}, 0).fine_tunes.empty());  // no teacher, no student
+  EXPECT_TRUE(SelectModels(spec, {"memory"}, 0).fine_tunes.empty());  // no teacher, no student
+}
+
+// --only may name any model: it keeps what the named ones need and what is built from them alone.
+TEST(StudySpecTest, SelectsAnyModelWithWhatItNeeds) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
+  seeds: 4
+  set: {policy.recurrent_size: 8}
+  configs:
+    a: {}
+    memory: {}
+    flat: {set: {policy.recurrent_size: 0}}
+ensembles:
+  pair: {members: [a, memory, memory]}
+students:
+  taught: {teacher: pair, start: memory}
+  from_flat: {teacher: flat, start: memory}
+fine_tunes:
+  tuned: {student: taught, steps: 1000}
+  flat_tuned: {student: from_flat, steps: 1000}
+)"));
+  const auto names = [](const auto& specs) {
+    std::vector<std::string> listed;
+    for (const auto& s : specs) listed.push_back(s.name);
+    return listed;
+  };
+  using Names = std::vector<std::string>;
+  const StudySpec tuned = SelectModels(spec, {"tuned"}, 0);
+  EXPECT_EQ(names(tuned.ppo_configs), (Names{"a", "memory"}));  // the teacher's members, the start
+  EXPECT_EQ(names(tuned.ensembles), Names{"pair"});
+  EXPECT_EQ(names(tuned.students), Names{"taught"});  // not from_flat, though built from memory
+  EXPECT_EQ(names(tuned.fine_tunes), Names{"tuned"});
+  EXPECT_EQ(tuned.fine_tunes[0].count, 2);  // pair's ensembles
+  const StudySpec pair = SelectModels(spec, {"pair"}, 0);
+  EXPECT_EQ(names(pair.ppo_configs), (Names{"a", "memory"}));
+  EXPECT_TRUE(pair.students.empty());  // taught's start is needed by none of the named
+  const StudySpec from_flat = SelectModels(spec, {"memory", "from_flat"}, 0);
+  EXPECT_EQ(names(from_flat.ppo_configs), (Names{"memory", "flat"}));  // file order
+  EXPECT_TRUE(from_flat.ensembles.empty());
+  EXPECT_EQ(names(from_flat.students), Names{"from_flat"});
+  EXPECT_EQ(names(from_flat.fine_tunes), Names{"flat_tuned"});  // built from a named student
+  EXPECT_EQ(names(SelectModels(spec, {"flat_tuned"}, 2).fine_tunes), Names{"flat_tuned"});
+  // One seed gives no pair (two runs of memory), so no taught and no tuned.
+  EXPECT_NE(UserErrorMessage([&] {
+              SelectModels(spec, {"tuned"}, 1);
+            }).find("--only tuned: --seeds 1 gives none of it"),
+            std::string::npos);
+  EXPECT_NE(UserErrorMessage([&] {
+              SelectModels(spec, {"taught", "nope"}, 0);
+            })
+                .find("--only nope: the study has no PPO configuration, ensemble, student or "
+                      "fine-tune"),
+            std::string::npos);
 }
 
 TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
