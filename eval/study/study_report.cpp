@@ -341,15 +341,15 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
   md << "\n![the beta sweep](" << beta << ")\n";
 }
 
-// How each configuration's runs ended (run_diagnostics.h), seed by seed: into the report's
-// table and summary.json's "runs".
+// How the runs of each configuration and kind of fine-tune ended (run_diagnostics.h), seed by
+// seed: into the report's table and summary.json's "runs".
 void RunsTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
                const std::filesystem::path& out) {
   md << "\nHow the runs ended, seed by seed: wall-clock, the action distribution's standard "
         "deviation at the last update (far past 1, the clipped actions steer bang-bang), and the "
         "training episodes' collisions and time-outs over the last tenth of the steps (sampled "
         "actions, training worlds).\n\n"
-        "| configuration | wall-clock s | std at the end | training collisions % | training "
+        "| PPO runs of | wall-clock s | std at the end | training collisions % | training "
         "time-outs % |\n|---|---|---|---|---|\n";
   for (const PpoRunKind& kind : PpoRunKinds(spec)) {
     std::vector<std::string> walls, stds, collisions, time_outs;

@@ -61,7 +61,7 @@ done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
 grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REPORT.md" ||
   fail "no return in the report's probability of improvement"
-grep -q "| configuration | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
+grep -q "| PPO runs of | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
   fail "no table of how the runs ended"
 grep -q "^- pair: 2 of \[shallow_locked, baseline\]$" "$WORK/run/REPORT.md" || fail "no ensembles"
 grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
