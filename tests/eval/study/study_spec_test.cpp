@@ -158,18 +158,22 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   EXPECT_TRUE(SelectModels(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
 }
 
-// Student k imitates the teacher's seed k and starts from the run ensemble k takes of `start`
-// (seed k when `start` is not a member); its options become "--name value" pairs in file order.
-TEST(StudySpecTest, StudiesDistilTeachersIntoStudents) {
-  const TemporaryFolder folder;
-  const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
+// Three configurations of 4 seeds, two of them recurrent (a student's start must be).
+constexpr char kRecurrentConfigs[] = R"(ppo:
   seeds: 4
   set: {policy.recurrent_size: 8}
   configs:
     a: {}
     memory: {}
     flat: {set: {policy.recurrent_size: 0}}
-ensembles:
+)";
+
+// Student k imitates the teacher's seed k and starts from the run ensemble k takes of `start`
+// (seed k when `start` is not a member); its options become "--name value" pairs in file order.
+TEST(StudySpecTest, StudiesDistilTeachersIntoStudents) {
+  const TemporaryFolder folder;
+  const StudySpec spec =
+      LoadStudySpec(WriteStudy(folder, std::string(kRecurrentConfigs) + R"(ensembles:
   pair: {members: [a, memory, memory], stall_pace_mps: 0.1}
 students:
   taught: {teacher: pair, start: memory, options: {traps: 8, stall-weight: 2.5}}
@@ -241,14 +245,8 @@ fine_tunes:
 // --only may name any model: it keeps what the named ones need and what is built from them alone.
 TEST(StudySpecTest, SelectsAnyModelWithWhatItNeeds) {
   const TemporaryFolder folder;
-  const StudySpec spec = LoadStudySpec(WriteStudy(folder, R"(ppo:
-  seeds: 4
-  set: {policy.recurrent_size: 8}
-  configs:
-    a: {}
-    memory: {}
-    flat: {set: {policy.recurrent_size: 0}}
-ensembles:
+  const StudySpec spec =
+      LoadStudySpec(WriteStudy(folder, std::string(kRecurrentConfigs) + R"(ensembles:
   pair: {members: [a, memory, memory]}
 students:
   taught: {teacher: pair, start: memory}
