@@ -1,14 +1,14 @@
 // One policy file that acts with the mean of several trained policies' deterministic actions, or
 // that hands the helm to one of two by the range of the nearest obstacle. Agents trained from
-// different seeds fail in different scenarios (README, "Ensembles of seeds"); averaging their
-// actions keeps what most of them do. Agents of different recipes are good at different things:
-// one keeps clear of obstacles, another keeps to the path (README, "Two helmsmen"). The members
-// may be memoryless or recurrent, and of different recipes, but must share their observation
-// settings (recorded in the file or its sidecar, eval/policy.h). A stall rule
+// different seeds fail in different scenarios (docs/results.md, "Ensembles of seeds"); averaging
+// their actions keeps what most of them do. Agents of different recipes are good at different
+// things: one keeps clear of obstacles, another keeps to the path (docs/results.md, "Two
+// helmsmen"). The members may be memoryless or recurrent, and of different recipes, but must share
+// their observation settings (recorded in the file or its sidecar, eval/policy.h). A stall rule
 // (eval/stall_rule.h) hands the helm to the second member for the rest of the episode, or, with
 // more members, to the next one at each stall: a vessel that stalls again under its relief is
-// handed to a third member, which passes where the relief parks (README, "A rescue at the second
-// stall").
+// handed to a third member, which passes where the relief parks (docs/results.md, "A rescue at the
+// second stall").
 //
 // The ensemble has the interface of a trained policy.pt (models/policy_export.h), so evaluate,
 // study and colav.Policy run it:

@@ -1,7 +1,8 @@
 // When the next policy of an ensemble takes the helm, for the rest of an episode or until the
 // vessel stalls again (eval/policy_ensemble.h). Our most cautious agents time out where they stop
-// or circle before a passage (README, "A relief when the vessel stalls"): another policy then
-// steers. Kept apart from the ensemble, which needs LibTorch, so that study files can name a rule.
+// or circle before a passage (docs/results.md, "A relief when the vessel stalls"): another policy
+// then steers. Kept apart from the ensemble, which needs LibTorch, so that study files can name a
+// rule.
 #pragma once
 
 #include <cstddef>

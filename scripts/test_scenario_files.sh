@@ -3,7 +3,7 @@
 # the first N of master seed SEED as OUT/PREFIX-KKK.yaml (KKK as in test-KKK), each with the test
 # scenario's path and start. KEEP: all (PREFIX test), none (bare), static (static: the circles
 # only) or dynamic (dynamic: the moving vessels only). Policies evaluated on them (evaluate
-# --scenario OUT/*.yaml) show what each kind of obstacle costs them (README, "What the
+# --scenario OUT/*.yaml) show what each kind of obstacle costs them (docs/results.md, "What the
 # cross-track error is made of").
 # usage: scripts/test_scenario_files.sh OUT KEEP [N (1000)] [SEED (1)]
 #   after scripts/build.sh; BIN (build/bin) and PYTHON_MODULE_DIR (build/python) may point elsewhere.

@@ -3,11 +3,11 @@
 // Where it lands is set by the line of approach, not by how far the vessel got: the goal test
 // ends an episode within 5 m of the path's end or at 99 % of it, so a vessel that enters the 5 m
 // circle d metres beside the path ends with its nearest path point sqrt(25 - d^2) metres before
-// the end (5 m for one on the path), or at the 99 % line where that comes first (README, "Where
-// the progress comparison is decided"). So P(A makes more progress than B) can stay below 0.5 for
-// an A that fails far less often than B. This splits it: over the pairs (A's seed, B's seed,
-// scenario) where both reached the goal, and over the others, each with ties counted half; and
-// it scores progress to the finish, where every goal counts 100 %.
+// the end (5 m for one on the path), or at the 99 % line where that comes first (docs/results.md,
+// "Where the progress comparison is decided"). So P(A makes more progress than B) can stay below
+// 0.5 for an A that fails far less often than B. This splits it: over the pairs (A's seed, B's
+// seed, scenario) where both reached the goal, and over the others, each with ties counted half;
+// and it scores progress to the finish, where every goal counts 100 %.
 #pragma once
 
 #include <vector>
