@@ -49,11 +49,14 @@ ObservationSettings SettingsFromYaml(const YAML::Node& root, const std::string& 
   for (const auto& item : root["env"]) {
     const std::string key = item.first.as<std::string>();
     if (!IsObservationKey(key)) {
-      throw UserError(source + ": env." + key +
-                      " is not an observation setting (only env.closeness, env.scan_history "
-                      "and env.scan_history_interval belong here)");
+      throw UserError(fmt::format(
+          "{}: env.{} is not an observation setting (only env.closeness, env.scan_history and "
+          "env.scan_history_interval belong here)",
+          source, key));
     }
-    if (!item.second.IsScalar()) throw UserError(source + ": env." + key + " must be a value");
+    if (!item.second.IsScalar()) {
+      throw UserError(fmt::format("{}: env.{} must be a value", source, key));
+    }
     config.Set("env." + key, item.second.as<std::string>(), source);
   }
   return ObservationSettingsOf(binding.Read(config));

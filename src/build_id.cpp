@@ -39,6 +39,9 @@ int ReadExecutableBuildId(dl_phdr_info* info, std::size_t /*size*/, void* id) {
   for (ElfW(Half) i = 0; i < info->dlpi_phnum; ++i) {
     const ElfW(Phdr)& segment = info->dlpi_phdr[i];
     if (segment.p_type != PT_NOTE) continue;
+    // The segment's address in memory is the object's load address plus its virtual address:
+    // dl_iterate_phdr gives both as integers.
+    // NOLINTNEXTLINE(performance-no-int-to-ptr)
     const char* notes = reinterpret_cast<const char*>(info->dlpi_addr + segment.p_vaddr);
     *static_cast<std::string*>(id) = BuildIdInNotes(notes, notes + segment.p_memsz);
     if (!static_cast<std::string*>(id)->empty()) break;

@@ -88,8 +88,9 @@ void MeasureInRounds(double seconds, int rounds, Case& one_thread,
   for (Case* c : others) c->measure(kWarmUpSeconds);
   for (int round = 0; round < rounds; ++round) {
     const double one_thread_rate = MeasureRound(seconds / rounds, one_thread);
-    for (Case* c : others)
+    for (Case* c : others) {
       c->ratios.push_back(MeasureRound(seconds / rounds, *c) / one_thread_rate);
+    }
   }
 }
 

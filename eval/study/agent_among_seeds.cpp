@@ -24,6 +24,7 @@ AgentAmongSeeds PlaceAmongSeeds(const std::string& config,
   AgentAmongSeeds placement{config, agent_name, {}};
   for (const StudyMetric& metric : StudyMetrics()) {
     std::vector<double> seed_means;
+    seed_means.reserve(seeds.size());
     for (const ModelEpisodes* seed : seeds) seed_means.push_back(Mean(seed->at(metric.name)));
     SeedPlacement& place = placement.metrics[metric.name];
     place.value = Mean(agent.at(metric.name));

@@ -262,8 +262,9 @@ auto ReadNamedEntries(const Reader& reader, const YAML::Node& node, const std::s
   std::vector<decltype(read_entry(reader, node, node, spec))> entries;
   if (!node) return entries;
   reader.RequireMap(node, section, {});
-  for (const auto& item : node)
+  for (const auto& item : node) {
     entries.push_back(read_entry(reader, item.first, item.second, spec));
+  }
   return entries;
 }
 
@@ -361,7 +362,7 @@ FineTuneSpec ReadFineTune(const Reader& reader, const YAML::Node& name, const YA
   for (const std::string& assignment : fine_tune.overrides) {
     const std::string set_key = assignment.substr(0, assignment.find('='));
     if (kStudyFineTuneKeys.count(set_key) > 0) {
-      reader.Fail(key + ".set." + set_key, "is set by the study");
+      reader.Fail(fmt::format("{}.set.{}", key, set_key), "is set by the study");
     }
   }
   if (node["compare_to"]) {

@@ -16,7 +16,7 @@
 namespace colav {
 
 struct AugmentationOptions {
-  int shifts_per_scan = 2;           ///< shifts added to each scan (N -> (1 + shifts) N)
+  int shifts_per_scan = 2;  ///< shifts added to each scan (N -> (1 + shifts) N)
   /// 0: the shifts are random. k > 0: they are +k then -k rays (the first `shifts_per_scan` of
   /// the two), as the reference code's rolls by +-10 (reference-learning.md 4.2 step 2).
   int fixed_shift_rays = 0;

@@ -73,9 +73,9 @@ OptionsBinding<DatasetGenerationOptions> DatasetGenerationBinding() {
       .Number("dataset.vessels_share", &Options::vessels_share,
               "share of synthetic scans with 5 vessels (5 circles: the rest)", 0.0, 1.0)
       .Number("augmentation.shifts_per_scan", augmentation(&AugmentationOptions::shifts_per_scan),
-              "circular shifts added per scan, random unless fixed (2: 20,000 -> 60,000 rows)", 0, 179)
-      .Number("augmentation.fixed_shift_rays",
-              augmentation(&AugmentationOptions::fixed_shift_rays),
+              "circular shifts added per scan, random unless fixed (2: 20,000 -> 60,000 rows)", 0,
+              179)
+      .Number("augmentation.fixed_shift_rays", augmentation(&AugmentationOptions::fixed_shift_rays),
               "0: random shifts; k: shifts of +k then -k rays instead (the reference: 10, +-20 "
               "degrees; shifts_per_scan at most 2)",
               0, kNumRays / 2 - 1)
