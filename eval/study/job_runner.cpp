@@ -142,17 +142,6 @@ std::vector<std::string> EvaluatedModels(const nlohmann::json& summary) {
   return names;
 }
 
-// The complete marker exists and, for a summary that says whether its run finished (train_ppo
-// writes one when stopped too), says so.
-bool Complete(const StudyJob& job) {
-  if (!std::filesystem::exists(job.complete_marker)) return false;
-  if (job.complete_marker.extension() != ".json") return true;
-  std::ifstream in(job.complete_marker);
-  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
-  if (summary.is_discarded() || !summary.value("finished", true)) return false;
-  return job.expected_models.empty() || EvaluatedModels(summary) == job.expected_models;
-}
-
 // The last non-empty line of `text`.
 std::string LastLine(const std::string& text) {
   std::istringstream in(text);
@@ -182,7 +171,7 @@ class Scheduler {
         claims_(options.claim_dir, CurrentProcess(), options.claim_timeout),
         heartbeat_interval_(std::max(std::chrono::seconds(1), options.claim_timeout / 4)) {
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
-      if (Complete(jobs_[i])) {
+      if (JobComplete(jobs_[i])) {
         states_[i] = JobState::kDone;
         ++summary_.skipped;
       } else {
@@ -260,7 +249,7 @@ class Scheduler {
   void LookAtOtherRanks() {
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
       if (states_[i] != JobState::kPending) continue;
-      if (Complete(jobs_[i])) {
+      if (JobComplete(jobs_[i])) {
         MarkDoneElsewhere(i);
       } else if (const auto reason = claims_.FailureSince(jobs_[i].id, session_start_)) {
         MarkFailed(i, "failed " + jobs_[i].id + " on another rank: " + *reason);
@@ -302,7 +291,7 @@ class Scheduler {
         continue;
       }
       if (attempt.previous) Say("took over " + job.id + " from " + HolderName(*attempt.previous));
-      if (Complete(job)) {  // completed between the look and the claim
+      if (JobComplete(job)) {  // completed between the look and the claim
         claims_.Release(job.id);
         MarkDoneElsewhere(i);
         continue;
@@ -339,7 +328,7 @@ class Scheduler {
   // Whether every job's outputs are complete, whoever ran it.
   bool StudyComplete() const {
     for (std::size_t i = 0; i < jobs_.size(); ++i) {
-      if (states_[i] != JobState::kDone && !Complete(jobs_[i])) return false;
+      if (states_[i] != JobState::kDone && !JobComplete(jobs_[i])) return false;
     }
     return true;
   }
@@ -353,7 +342,7 @@ class Scheduler {
       running_.erase(entry);
       local_change_ = true;
       const StudyJob& job = jobs_[i];
-      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && Complete(job);
+      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && JobComplete(job);
       if (taken_over_.erase(i) > 0) {
         states_[i] = JobState::kPending;  // the rank that took it over finishes it
       } else if (ok) {
@@ -411,7 +400,7 @@ std::map<std::string, std::string> CheckJobConfigurations(
     const std::filesystem::path recorded = job.recorded_settings.empty()
                                                ? job.complete_marker.parent_path() / "config.yaml"
                                                : job.recorded_settings;
-    const bool finished = Complete(job);
+    const bool finished = JobComplete(job);
     if (finished && !std::filesystem::exists(recorded)) continue;
     std::vector<std::string> args = job.args;
     args.emplace_back("--print-config");
@@ -438,8 +427,17 @@ JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions&
   return Scheduler(jobs, options).Run();
 }
 
+bool JobComplete(const StudyJob& job) {
+  if (!std::filesystem::exists(job.complete_marker)) return false;
+  if (job.complete_marker.extension() != ".json") return true;
+  std::ifstream in(job.complete_marker);
+  const nlohmann::json summary = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (summary.is_discarded() || !summary.value("finished", true)) return false;
+  return job.expected_models.empty() || EvaluatedModels(summary) == job.expected_models;
+}
+
 bool AllJobsComplete(const std::vector<StudyJob>& jobs) {
-  return std::all_of(jobs.begin(), jobs.end(), Complete);
+  return std::all_of(jobs.begin(), jobs.end(), JobComplete);
 }
 
 std::filesystem::path ProgramFolder() {

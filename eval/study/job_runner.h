@@ -55,6 +55,11 @@ std::map<std::string, std::string> CheckJobConfigurations(const std::vector<Stud
 /// dies, so that it checkpoints and its claim can be taken over.
 JobRunSummary RunJobs(const std::vector<StudyJob>& jobs, const JobRunnerOptions& options);
 
+/// Whether the job's outputs are complete: its complete marker exists and, for a summary that says
+/// whether its run finished (train_ppo writes one when stopped too), says so; an evaluation's
+/// lists exactly its expected models.
+bool JobComplete(const StudyJob& job);
+
 /// Whether the outputs of every job are complete (a finished study, whoever ran it).
 bool AllJobsComplete(const std::vector<StudyJob>& jobs);
 

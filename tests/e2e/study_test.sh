@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # The study runner end to end with the real programs at a tiny budget: a bad program key and an
-# ensemble of runs that would observe differently are refused before any work; 2 PPO
-# configurations x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report; a
-# second invocation skips every job, and one whose study file changed is refused; a study stopped
-# by SIGTERM during a PPO run exits 130 and the same command then finishes it.
+# ensemble of runs that would observe differently are refused before any work; 2 PPO configurations
+# x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report; a second invocation
+# skips every job, and one whose study file changed is refused; --plan lists the jobs before and
+# after, creating nothing; a study stopped by SIGTERM during a PPO run exits 130 and the same
+# command then finishes it.
 #   study_test.sh BIN_DIR WORK_DIR
 set -euo pipefail
 # shellcheck source=tests/e2e/study_test_lib.sh
@@ -48,6 +49,13 @@ study_refuses mixed "ensembles.pair: the runs of log .* observe differently" "$W
   --out "$WORK/mixed"
 [ ! -e "$WORK/mixed/data" ] || fail "a job ran before the ensemble was checked"
 
+# --plan lists the jobs the command would run and creates nothing.
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --plan >"$WORK/plan.out" || fail "--plan failed"
+grep -q "^12 jobs: 0 complete, 12 to run or resume" "$WORK/plan.out" || fail "plan before the run"
+grep -q "^to run .* ensembles/pair/seed_1 *ensemble_policy *ppo/shallow_locked/seed_1, " \
+  "$WORK/plan.out" || { cat "$WORK/plan.out"; fail "ensemble job not planned"; }
+[ ! -e "$WORK/run" ] || fail "--plan created the study folder"
+
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --jobs 2 >"$WORK/first.out" 2>"$WORK/first.err" ||
   { tail -20 "$WORK/first.err"; fail "first run failed"; }
 grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
@@ -65,6 +73,8 @@ grep -q "| PPO runs of | wall-clock s | std at the end |" "$WORK/run/REPORT.md" 
   fail "no table of how the runs ended"
 grep -q "^- pair: 2 of \[shallow_locked, baseline\]$" "$WORK/run/REPORT.md" || fail "no ensembles"
 grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --plan | grep -q "^12 jobs: 12 complete, 0 to" ||
+  fail "plan after the run"
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import csv, json, os, statistics, sys
 s = json.load(open(sys.argv[1]))

@@ -19,6 +19,7 @@
 #include "eval/study/ensemble_observations.h"
 #include "eval/study/job_claims.h"
 #include "eval/study/job_graph.h"
+#include "eval/study/job_plan.h"
 #include "eval/study/job_runner.h"
 #include "eval/study/launcher_environment.h"
 #include "eval/study/process_identity.h"
@@ -79,6 +80,7 @@ int Study(int argc, char** argv) {
   std::vector<std::string> only;
   std::vector<std::string> overrides;
   bool report_only = false;
+  bool plan_only = false;
   app.add_option("study", study_file, "study file (YAML)")->required()->type_name("STUDY.yaml");
   app.add_option("--out", out, "study folder (created; reused to resume)")->required();
   app.add_option("--jobs", jobs, "programs running at once (default: one per core of this rank)")
@@ -87,9 +89,14 @@ int Study(int argc, char** argv) {
       ->check(CLI::Range(1, 1000));
   app.add_option("--only", only,
                  "run only these models (PPO configurations, ensembles, students, fine-tunes), "
-                 "what is built from them alone, and what they need");
+                 "what is built from them alone, and what they need")
+      ->type_name("NAME");
   app.add_option("--set", overrides, "KEY=VALUE override of every PPO run (train_ppo's keys)");
   app.add_flag("--report", report_only, "only write the report from the finished evaluations");
+  app.add_flag("--plan", plan_only,
+               "print the jobs this command would run (each one's state, program, estimated work "
+               "and what it waits for) and exit: nothing is created, run or checked")
+      ->excludes("--report");
   app.add_option("--shard", shard_flag,
                  "this rank's share I/N of a study run by N ranks (default: from mpirun's or "
                  "Slurm's environment): it starts on the I-th ready job, then claims any")
@@ -109,6 +116,10 @@ int Study(int argc, char** argv) {
                             "train.env_threads=" + std::to_string(threads_per_job));
   spec.ppo_overrides.insert(spec.ppo_overrides.end(), overrides.begin(), overrides.end());
   const std::filesystem::path folder = std::filesystem::absolute(out);
+  if (plan_only) {
+    std::fputs(DescribeJobPlan(BuildJobGraph(spec, folder)).c_str(), stdout);
+    return 0;
+  }
   const double start_s = UnixSeconds();
   JobRunSummary summary;
   JobClaims claims(folder / "claims", CurrentProcess(), std::chrono::seconds(claim_timeout_s));
