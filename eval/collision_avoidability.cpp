@@ -28,6 +28,7 @@ std::vector<std::array<double, kActionSize>> ActionGrid() {
 std::vector<Manoeuvre> CandidateManoeuvres() {
   const std::vector<std::array<double, kActionSize>> actions = ActionGrid();
   std::vector<Manoeuvre> manoeuvres;
+  manoeuvres.reserve(actions.size() + kSwitchAfter.size() * actions.size() * (actions.size() - 1));
   for (const auto& action : actions) manoeuvres.push_back({action, kNeverSwitch, action});
   for (const int switch_after : kSwitchAfter) {
     for (const auto& first : actions) {

@@ -17,6 +17,7 @@ namespace {
 std::vector<std::pair<std::string, std::string>> ScenarioKeys(
     const std::vector<EvaluationEpisode>& episodes) {
   std::vector<std::pair<std::string, std::string>> keys;
+  keys.reserve(episodes.size());
   for (const EvaluationEpisode& episode : episodes) {
     keys.emplace_back(episode.name, episode.seed ? std::to_string(*episode.seed) : "");
   }

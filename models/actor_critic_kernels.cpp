@@ -320,8 +320,8 @@ void AdamUpdate(const AdamCoefficients& coefficients, const float* grad, float* 
     const Vec v = Load(exp_avg_sq + i) * b2 + g * g * (1.0f - b2);
     Store(exp_avg + i, m);
     Store(exp_avg_sq + i, v);
-    Store(param + i, Load(param + i) - coefficients.step_size *
-                                           (m / (Sqrt(v) / correction + coefficients.eps)));
+    Store(param + i, Load(param + i) -
+                         coefficients.step_size * (m / (Sqrt(v) / correction + coefficients.eps)));
   }
   for (; i < n; ++i) {
     const float g = grad[i] * scale;

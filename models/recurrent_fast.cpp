@@ -126,8 +126,8 @@ void FastGru::BackwardSequences(const float* x, float* d_states, float* d_x) {
     // d previous += W_hh^T d_gh; it reaches the step before unless an episode starts here.
     // Row s of the product: (W_hh^T d_gh)_s, S rows of H values.
     float* d_recurrent = d_recurrent_product_.data();
-    kernels::MatMul(d_recurrent, H, d_recurrent_gates_.data() + c0, 1, C, Data(weight_hh_), H, S,
-                    H, 3 * H, /*accumulate=*/false);
+    kernels::MatMul(d_recurrent, H, d_recurrent_gates_.data() + c0, 1, C, Data(weight_hh_), H, S, H,
+                    3 * H, /*accumulate=*/false);
     for (int j = 0; j < H; ++j) {
       for (int s = 0; s < S; ++s) {
         const int k = j * C + c0 + s;

@@ -155,8 +155,9 @@ std::vector<std::vector<EpisodeOutcome>> RunUnlessReusable(
       run_index.push_back(m);
       continue;
     }
-    for (const EpisodeMetrics& metrics : taken->second)
+    for (const EpisodeMetrics& metrics : taken->second) {
       outcomes[m].emplace_back().metrics = metrics;
+    }
   }
   if (to_run.empty()) return outcomes;
   auto ran = RunWithProgress(to_run, episodes, env_config, threads, "evaluate");
@@ -434,6 +435,7 @@ int Evaluate(int argc, char** argv) {
       on_files ? ScenarioFileEpisodes({scenario_files.begin(), scenario_files.end()})
                : TestEpisodes(seed, options.episodes);
   std::vector<std::string> fingerprints;
+  fingerprints.reserve(policies.size());
   for (const Policy& policy : policies) fingerprints.push_back(PolicyFingerprint(policy.path()));
   // Read before the folder is prepared: --reuse may name --out, whose files a rerun replaces.
   const ReusableEpisodes reusable =

@@ -79,6 +79,7 @@ int PlotTraining(int argc, char** argv) {
     PlotTrainingCurves(SeedCurves(runs, window), title, RangeOverSeedsBand(window), out);
   } else {
     std::vector<TrainingCurve> curves;
+    curves.reserve(runs.size());
     for (const TrainingRun& run : runs) curves.push_back(RollingCurve(run, window));
     PlotTrainingCurves(curves, title,
                        "rolling mean and sd over " + std::to_string(window) + " episodes", out);
