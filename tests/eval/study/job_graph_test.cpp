@@ -89,8 +89,8 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
   // Each policy brings its own observation settings: the evaluation sets none.
   EXPECT_FALSE(Has(evaluation.args, {"--set"}));
   // A study that gained models evaluates again, taking the unchanged models' episodes.
-  EXPECT_TRUE(Has(evaluation.args,
-                  {"--out", "/s/eval/study", "--overwrite", "--reuse", "/s/eval/study"}));
+  EXPECT_TRUE(
+      Has(evaluation.args, {"--out", "/s/eval/study", "--overwrite", "--reuse", "/s/eval/study"}));
 }
 
 // Each ensemble is a job after the runs it averages, and a model of the evaluations after them.
