@@ -27,4 +27,17 @@ std::string EpisodeTable(const std::vector<std::string>& model_names,
   return table.str();
 }
 
+EpisodeMetrics EpisodeMetricsOfRow(const std::vector<std::string>& row) {
+  EpisodeMetrics metrics;
+  metrics.progress = std::stod(row.at(3));
+  metrics.mean_abs_cte = std::stod(row.at(4));
+  metrics.steps = std::stoll(row.at(5));
+  metrics.collision = row.at(6) == "1";
+  metrics.goal_reached = row.at(7) == "1";
+  metrics.truncated = row.at(8) == "1";
+  metrics.cumulative_reward = std::stod(row.at(9));
+  metrics.path_length = std::stod(row.at(10));
+  return metrics;
+}
+
 }  // namespace colav

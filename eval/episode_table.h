@@ -19,4 +19,9 @@ std::string EpisodeTable(const std::vector<std::string>& model_names,
                          const std::vector<EvaluationEpisode>& episodes,
                          const std::vector<std::vector<EpisodeOutcome>>& outcomes);
 
+/// One row of that table (its cells, the header's columns) read back as the metrics it was
+/// written from: exact, since the table keeps every value at full precision. std::invalid_argument
+/// or std::out_of_range for a cell that is not a number, or a short row.
+EpisodeMetrics EpisodeMetricsOfRow(const std::vector<std::string>& row);
+
 }  // namespace colav

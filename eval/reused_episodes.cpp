@@ -24,20 +24,6 @@ std::vector<std::pair<std::string, std::string>> ScenarioKeys(
   return keys;
 }
 
-// One episodes.csv row's metrics (EpisodeTable's columns, values at full precision).
-EpisodeMetrics MetricsOfRow(const std::vector<std::string>& row) {
-  EpisodeMetrics metrics;
-  metrics.progress = std::stod(row.at(3));
-  metrics.mean_abs_cte = std::stod(row.at(4));
-  metrics.steps = std::stoll(row.at(5));
-  metrics.collision = row.at(6) == "1";
-  metrics.goal_reached = row.at(7) == "1";
-  metrics.truncated = row.at(8) == "1";
-  metrics.cumulative_reward = std::stod(row.at(9));
-  metrics.path_length = std::stod(row.at(10));
-  return metrics;
-}
-
 // Why the folder's evaluation was not run as `planned` is (scenarios aside); none when it was.
 std::optional<std::string> Mismatch(const std::filesystem::path& folder,
                                     const PlannedEvaluation& planned,
@@ -74,7 +60,7 @@ std::map<std::string, std::vector<EpisodeMetrics>> EpisodesOfUnchangedModels(
   for (const std::vector<std::string>& row : table.rows) {
     const auto model = by_model.find(row.at(0));
     if (model == by_model.end()) continue;
-    model->second.push_back(MetricsOfRow(row));
+    model->second.push_back(EpisodeMetricsOfRow(row));
     keys[row.at(0)].emplace_back(row.at(1), row.at(2));
   }
   for (auto model = by_model.begin(); model != by_model.end();) {
