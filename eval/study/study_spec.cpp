@@ -429,6 +429,12 @@ int EnsembleSpec::MaxCount(int seeds) const {
   return most;
 }
 
+bool StudySpec::HasModel(const std::string& name) const {
+  const std::vector<SeededModel> models = SeededModels();
+  return std::any_of(models.begin(), models.end(),
+                     [&](const SeededModel& m) { return m.name == name; });
+}
+
 std::vector<SeededModel> StudySpec::SeededModels() const {
   std::vector<SeededModel> models;
   for (const PpoConfigSpec& config : ppo_configs) {
@@ -494,11 +500,8 @@ StudySpec LoadStudySpec(const std::filesystem::path& path) {
   spec.fine_tunes = ReadNamedEntries(reader, root["fine_tunes"], "fine_tunes", spec, ReadFineTune);
   spec.evaluation = ReadEvaluation(reader, root["evaluation"]);
   if (root["vae_figures"]) spec.vae_figures = reader.Bool(root["vae_figures"], "vae_figures");
-  const std::vector<SeededModel> models = spec.SeededModels();
   const auto check_compared_with = [&](const std::string& name, const std::string& key) {
-    const bool known = std::any_of(models.begin(), models.end(),
-                                   [&](const SeededModel& m) { return m.name == name; });
-    if (!known) {
+    if (!spec.HasModel(name)) {
       reader.Fail(key, "'" + name +
                            "' is not a PPO configuration, ensemble, student or fine-tune of the "
                            "study");
@@ -556,14 +559,9 @@ bool Holds(const std::set<std::string>& names, const std::string& name) {
 // The first of `names` that is no model of `spec`, if any.
 std::optional<std::string> FirstMissingModel(const StudySpec& spec,
                                              const std::vector<std::string>& names) {
-  const std::vector<SeededModel> models = spec.SeededModels();
-  for (const std::string& name : names) {
-    if (std::none_of(models.begin(), models.end(),
-                     [&](const SeededModel& m) { return m.name == name; })) {
-      return name;
-    }
-  }
-  return std::nullopt;
+  const auto missing = std::find_if(names.begin(), names.end(),
+                                    [&](const std::string& name) { return !spec.HasModel(name); });
+  return missing == names.end() ? std::nullopt : std::optional<std::string>(*missing);
 }
 
 // The models `only` names and the kinds built from them alone: an ensemble all of whose members

@@ -166,6 +166,9 @@ struct StudySpec {
   /// The PPO configurations, then the ensemble kinds, the kinds of student and of fine-tuned
   /// student, in file order.
   std::vector<SeededModel> SeededModels() const;
+  /// Whether the study has a PPO configuration, ensemble kind, kind of student or of fine-tune
+  /// named `name`.
+  bool HasModel(const std::string& name) const;
   /// The PPO configuration named `name`, if there is one.
   const PpoConfigSpec* FindConfig(const std::string& name) const;
   /// The ensemble kind named `name`, if there is one.
