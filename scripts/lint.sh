@@ -6,6 +6,7 @@
 #
 #   scripts/lint.sh              # the whole project
 #   scripts/lint.sh src tests/src/config_test.cpp   # only these folders or files
+#   scripts/lint.sh --format-only                   # clang-format alone (seconds; CTest runs it)
 #
 # clang-tidy on a LibTorch translation unit takes a minute or two (it parses <torch/torch.h>;
 # GCC's precompiled header is of no use to clang), so
@@ -13,10 +14,17 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 BUILD_DIR="${BUILD_DIR:-build}"
-CODE_FOLDERS=(src env models train eval tests)
+CODE_FOLDERS=(src env models train eval tests python)
 TIDY_FOLDERS='^(src|env|models|train|eval)/'
 
-for tool in clang-format clang-tidy; do
+format_only=0
+if [ "${1:-}" = "--format-only" ]; then
+  format_only=1
+  shift
+fi
+tools=(clang-format)
+[ $format_only -eq 0 ] && tools+=(clang-tidy)
+for tool in "${tools[@]}"; do
   command -v "$tool" >/dev/null ||
     { echo "lint: $tool not found (apt-get install $tool)" >&2; exit 1; }
 done
@@ -36,7 +44,7 @@ clang-format --dry-run -Werror "${sources[@]}" || status=1
 
 mapfile -t tidy_sources < <(printf '%s\n' "${sources[@]}" | grep -E "$TIDY_FOLDERS" |
   grep '\.cpp$' || true)
-if [ ${#tidy_sources[@]} -gt 0 ]; then
+if [ $format_only -eq 0 ] && [ ${#tidy_sources[@]} -gt 0 ]; then
   # Reconfigure so that files added since the last build are in compile_commands.json.
   cmake -S . -B "$BUILD_DIR" >/dev/null
   # The LibTorch targets include GCC's precompiled header (-include .../cmake_pch.hxx next to its
