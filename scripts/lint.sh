@@ -42,9 +42,12 @@ status=0
 echo "lint: clang-format on ${#sources[@]} files"
 clang-format --dry-run -Werror "${sources[@]}" || status=1
 
-mapfile -t tidy_sources < <(printf '%s\n' "${sources[@]}" | grep -E "$TIDY_FOLDERS" |
-  grep '\.cpp$' || true)
-if [ $format_only -eq 0 ] && [ ${#tidy_sources[@]} -gt 0 ]; then
+tidy_sources=()
+if [ $format_only -eq 0 ]; then
+  mapfile -t tidy_sources < <(printf '%s\n' "${sources[@]}" | grep -E "$TIDY_FOLDERS" |
+    grep '\.cpp$' || true)
+fi
+if [ ${#tidy_sources[@]} -gt 0 ]; then
   # Reconfigure so that files added since the last build are in compile_commands.json.
   cmake -S . -B "$BUILD_DIR" >/dev/null
   # The LibTorch targets include GCC's precompiled header (-include .../cmake_pch.hxx next to its
