@@ -43,17 +43,32 @@ void ExpectClose(const float* fast, const torch::Tensor& reference, double toler
   const torch::Tensor expected = reference.detach().contiguous().flatten();
   const double scale = std::max(1e-3, expected.abs().max().item<double>());
   for (int i = 0; i < expected.numel(); ++i) {
-    ASSERT_NEAR(fast[i], expected[i].item<float>(), tolerance * scale) << what << " [" << i << "]";
+    ASSERT_NEAR(fast[i], expected[i].item<double>(), tolerance * scale) << what << " [" << i << "]";
   }
 }
 
 class FastActorCriticTest
     : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool, EncoderHead, int>> {};
 
+// The reference gradients come from a float64 copy of the model. Both the fast passes and LibTorch
+// sum thousands of float32 terms per convolution weight, each in its own order (LibTorch's depends
+// on the CPU's vector width), so two float32 results can differ by more than the 1e-4 a gradient
+// error would exceed; against float64 only the fast passes' own rounding remains.
+ActorCritic DoublePrecisionCopy(ActorCritic& model, const ActorCriticOptions& options) {
+  ActorCritic copy(options);
+  torch::NoGradGuard no_grad;
+  const auto source = model->parameters();
+  const auto target = copy->parameters();
+  for (std::size_t i = 0; i < source.size(); ++i) target[i].copy_(source[i]);
+  copy->to(torch::kFloat64);
+  return copy;
+}
+
 TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   const auto [kind, locked, head, scans] = GetParam();
   testing_util::TemporaryFolder directory;
-  ActorCritic model(Options(kind, directory.path(), locked, head, scans));
+  const ActorCriticOptions options = Options(kind, directory.path(), locked, head, scans);
+  ActorCritic model(options);
   FastActorCritic fast(model, kBatch);
   EXPECT_EQ(fast.extractor_trainable(), kind == ExtractorKind::kBaseline || !locked);
   EXPECT_EQ(fast.observation_size(), kNavigationSize + scans * kNumRays);
@@ -62,16 +77,18 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   const torch::Tensor grad_mean = torch::randn({kBatch, kActionSize});
   const torch::Tensor grad_value = torch::randn({kBatch});
   const torch::Tensor grad_log_std = torch::randn({kActionSize});
-  auto [mean, value] = model->forward(obs);
+  ActorCritic reference = DoublePrecisionCopy(model, options);
+  auto [mean, value] = reference->forward(obs.to(torch::kFloat64));
   const torch::Tensor loss = (mean * grad_mean).sum() + (value.squeeze(1) * grad_value).sum() +
-                             (model->log_std() * grad_log_std).sum();
+                             (reference->log_std() * grad_log_std).sum();
   loss.backward();
 
   std::vector<const float*> rows(kBatch);
   for (int b = 0; b < kBatch; ++b) rows[b] = obs[b].data_ptr<float>();
   std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
   fast.Features(obs.data_ptr<float>(), kBatch, features.data());
-  ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
+  ExpectClose(features.data(), reference->features_extractor()->forward(obs.to(torch::kFloat64)),
+              1e-5, "features");
   if (fast.extractor_trainable()) {
     fast.ForwardObservations(rows.data(), kBatch);
   } else {
@@ -85,7 +102,7 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
   torch::Tensor d_value = grad_value.clone();
   fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
                 kBatch);
-  const auto parameters = model->TrainableParameters();
+  const auto parameters = reference->TrainableParameters();
   ASSERT_EQ(fast.gradients().size(), parameters.size());
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     ExpectClose(fast.gradients()[i].data_ptr<float>(), parameters[i].grad(), 1e-4,
@@ -113,20 +130,24 @@ class FastActorCriticPredictTest : public ::testing::TestWithParam<std::tuple<Ex
 TEST_P(FastActorCriticPredictTest, PredictAndFeaturesMatchTheModel) {
   const auto [kind, scans] = GetParam();
   testing_util::TemporaryFolder directory;
-  ActorCritic model(Options(kind, directory.path(), /*locked=*/true, EncoderHead::kMu, scans));
+  const ActorCriticOptions options =
+      Options(kind, directory.path(), /*locked=*/true, EncoderHead::kMu, scans);
+  ActorCritic model(options);
   constexpr int kMaxBatch = 5;
   FastActorCritic fast(model, kMaxBatch);
   const torch::Tensor obs = Observations(kBatch, model);
+  ActorCritic reference = DoublePrecisionCopy(model, options);
   torch::NoGradGuard no_grad;
   // Features of more observations than max_batch: in chunks.
   std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
   fast.Features(obs.data_ptr<float>(), kBatch, features.data());
-  ExpectClose(features.data(), model->features_extractor()->forward(obs), 1e-5, "features");
+  ExpectClose(features.data(), reference->features_extractor()->forward(obs.to(torch::kFloat64)),
+              1e-5, "features");
 
   const torch::Tensor batch = obs.narrow(0, 0, kMaxBatch);
   std::vector<float> mean(kMaxBatch * kActionSize), value(kMaxBatch);
   fast.Predict(batch.data_ptr<float>(), kMaxBatch, mean.data(), value.data());
-  const auto [expected_mean, expected_value] = model->forward(batch);
+  const auto [expected_mean, expected_value] = reference->forward(batch.to(torch::kFloat64));
   ExpectClose(mean.data(), expected_mean, 1e-5, "mean");
   ExpectClose(value.data(), expected_value, 1e-5, "value");
 }
@@ -172,20 +193,21 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   const torch::Tensor grad_mean = torch::randn({B, kActionSize});
   const torch::Tensor grad_value = torch::randn({B});
   const torch::Tensor grad_log_std = torch::randn({kActionSize});
-  torch::Tensor state = initial;
+  ActorCritic reference = DoublePrecisionCopy(model, options);
+  torch::Tensor state = initial.to(torch::kFloat64);
   std::vector<torch::Tensor> means, values;
   for (int t = 0; t < kSteps; ++t) {
-    torch::Tensor keep = torch::ones({kSequences, 1});
+    torch::Tensor keep = torch::ones({kSequences, 1}, torch::kFloat64);
     for (int s = 0; s < kSequences; ++s) keep[s][0] = reset[t * kSequences + s] ? 0.0f : 1.0f;
-    auto [mean, value, next] =
-        model->forward_recurrent(obs.narrow(0, t * kSequences, kSequences), state * keep);
+    auto [mean, value, next] = reference->forward_recurrent(
+        obs.narrow(0, t * kSequences, kSequences).to(torch::kFloat64), state * keep);
     means.push_back(mean);
     values.push_back(value);
     state = next;
   }
   const torch::Tensor mean = torch::cat(means), value = torch::cat(values);
   const torch::Tensor loss = (mean * grad_mean).sum() + (value.squeeze(1) * grad_value).sum() +
-                             (model->log_std() * grad_log_std).sum();
+                             (reference->log_std() * grad_log_std).sum();
   loss.backward();
 
   std::vector<const float*> rows(B), initial_rows(kSequences);
@@ -206,7 +228,7 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   torch::Tensor d_value = grad_value.clone();
   fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
                 B);
-  const auto parameters = model->TrainableParameters();
+  const auto parameters = reference->TrainableParameters();
   ASSERT_EQ(fast.gradients().size(), parameters.size());
   for (std::size_t i = 0; i < parameters.size(); ++i) {
     ExpectClose(fast.gradients()[i].data_ptr<float>(), parameters[i].grad(), 1e-4,
@@ -220,7 +242,8 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   std::vector<float> predicted_mean(kSequences * kActionSize), predicted_value(kSequences);
   fast.Predict(batch.data_ptr<float>(), kSequences, predicted_mean.data(), predicted_value.data(),
                states.data_ptr<float>());
-  const auto [step_mean, step_value, step_state] = model->forward_recurrent(batch, initial);
+  const auto [step_mean, step_value, step_state] =
+      reference->forward_recurrent(batch.to(torch::kFloat64), initial.to(torch::kFloat64));
   ExpectClose(predicted_mean.data(), step_mean, 1e-5, "predicted mean");
   ExpectClose(predicted_value.data(), step_value, 1e-5, "predicted value");
   ExpectClose(states.data_ptr<float>(), step_state, 1e-5, "next states");
