@@ -1,0 +1,105 @@
+#!/usr/bin/env python3
+"""Checks the relative links of Markdown files: every linked file exists inside the repository,
+and every #anchor is an <a id="..."> or a heading of the linked file (GitHub's heading anchors).
+Links to web addresses are not checked (nothing is fetched), nor links inside code.
+
+Usage: check_links.py ROOT [FILE.md ...]
+  Without files, every *.md file git tracks under ROOT. Prints one line per broken link
+  (file:line: target: why) and a summary; exits 1 if a link is broken, 2 on bad input."""
+import functools
+import pathlib
+import re
+import subprocess
+import sys
+
+# [text](target) and ![alt](target), with an optional "title"; text may hold one level of [].
+LINK = re.compile(r"!?\[(?:[^\][]|\[[^\]]*\])*\]\(\s*<?([^)\s>]+)>?(?:\s+\"[^\"]*\")?\s*\)")
+EXPLICIT_ANCHOR = re.compile(r"<a\s+(?:id|name)=\"([^\"]+)\"")
+HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
+FENCE = re.compile(r"^\s*(```|~~~)")
+CODE_SPAN = re.compile(r"`[^`]*`")
+WEB_ADDRESS = re.compile(r"^[a-z][a-z0-9+.-]*:", re.IGNORECASE)  # https:, mailto:, ...
+
+
+def github_anchor(heading):
+    """GitHub's anchor of a heading: markup and punctuation dropped, lower case, spaces -> '-'."""
+    text = re.sub(r"<[^>]+>", "", heading)
+    text = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", text)
+    text = re.sub(r"[^\w\- ]", "", text.strip().lower())
+    return text.replace(" ", "-")
+
+
+def prose_lines(path):
+    """(line number, text) of the lines outside fenced code blocks."""
+    inside_fence = False
+    for number, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1):
+        if FENCE.match(line):
+            inside_fence = not inside_fence
+        elif not inside_fence:
+            yield number, line
+
+
+@functools.lru_cache(maxsize=None)
+def anchors_of(path):
+    """The anchors of a Markdown file; a repeated heading's later anchors end in -1, -2, ..."""
+    anchors, repeats = set(), {}
+    for _, line in prose_lines(path):
+        anchors.update(EXPLICIT_ANCHOR.findall(line))
+        heading = HEADING.match(line)
+        if heading:
+            anchor = github_anchor(heading.group(2))
+            count = repeats.get(anchor, 0)
+            repeats[anchor] = count + 1
+            anchors.add(anchor if count == 0 else f"{anchor}-{count}")
+    return frozenset(anchors)
+
+
+def broken_links(path, root):
+    """(line number, target, why) of each broken link of `path`."""
+    for number, line in prose_lines(path):
+        for target in LINK.findall(CODE_SPAN.sub("", line)):
+            if WEB_ADDRESS.match(target):
+                continue
+            file_part, _, anchor = target.partition("#")
+            linked = (path.parent / file_part).resolve() if file_part else path
+            if not linked.is_relative_to(root):
+                yield number, target, "outside the repository"
+            elif not linked.exists():
+                yield number, target, "no such file"
+            elif anchor and linked.suffix == ".md" and anchor not in anchors_of(linked):
+                yield number, target, "no such anchor"
+
+
+def markdown_files(root, names):
+    if names:
+        return [pathlib.Path(name).resolve() for name in names]
+    listed = subprocess.run(["git", "-C", str(root), "ls-files", "*.md"], check=True,
+                            capture_output=True, text=True).stdout.split()
+    return [root / name for name in listed]
+
+
+def main(argv):
+    if len(argv) < 2:
+        print("usage: check_links.py ROOT [FILE.md ...]", file=sys.stderr)
+        return 2
+    root = pathlib.Path(argv[1]).resolve()
+    if not root.is_dir():
+        print(f"check_links.py: {argv[1]}: no such folder", file=sys.stderr)
+        return 2
+    files = markdown_files(root, argv[2:])
+    for path in files:
+        if not path.is_file():
+            print(f"check_links.py: {path}: no such file", file=sys.stderr)
+            return 2
+    broken = 0
+    for path in files:
+        for number, target, why in broken_links(path, root):
+            shown = path.relative_to(root) if path.is_relative_to(root) else path
+            print(f"{shown}:{number}: {target}: {why}")
+            broken += 1
+    print(f"check_links: {len(files)} files, {broken} broken links")
+    return 1 if broken else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,64 @@
+"""scripts/check_links.py: the project's Markdown files link only to files and anchors that exist;
+and on files made here, each kind of broken link is found and each kind of good one passes."""
+
+import subprocess
+import sys
+
+from conftest import SOURCE_DIR
+
+SCRIPT = SOURCE_DIR / "scripts" / "check_links.py"
+
+
+def run(*args):
+    return subprocess.run([sys.executable, str(SCRIPT), *map(str, args)], capture_output=True,
+                          text=True)
+
+
+def test_the_projects_markdown_files_have_no_broken_link():
+    result = run(SOURCE_DIR)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "README.md" in subprocess.run(["git", "-C", str(SOURCE_DIR), "ls-files", "*.md"],
+                                         capture_output=True, text=True, check=True).stdout
+
+
+def write_docs(tmp_path):
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "docs" / "figure.png").write_bytes(b"")
+    (tmp_path / "docs" / "results.md").write_text(
+        "# Results: the best recipe (5 seeds)\n"
+        "<a id=\"result-memory\"></a>**A memory.**\n"
+        "## Notes\n## Notes\n"
+        "Back to [the top](../README.md#the-two-commands).\n")
+    (tmp_path / "README.md").write_text(
+        "# Title\n## The two commands\n"
+        "Good: [a](docs/results.md#results-the-best-recipe-5-seeds), [b](docs/results.md"
+        "#result-memory), [c](docs/results.md#notes-1), ![d](docs/figure.png), [e](#title),\n"
+        "[f](https://example.org/nowhere), `[g](docs/in_code.md)`.\n"
+        "```\n[h](docs/in_a_fence.md)\n```\n"
+        "Broken: [i](docs/missing.md), [j](docs/results.md#nope), [k](#notes-2),\n"
+        "[l](../outside.md), [m](docs/results.md#notes-2).\n")
+    return tmp_path
+
+
+def test_every_kind_of_broken_link_is_found_and_good_links_pass(tmp_path):
+    root = write_docs(tmp_path)
+    (tmp_path.parent / "outside.md").write_text("# Outside\n")
+    result = run(root, root / "README.md", root / "docs" / "results.md")
+    assert result.returncode == 1
+    assert result.stdout.splitlines() == [
+        "README.md:8: docs/missing.md: no such file",
+        "README.md:8: docs/results.md#nope: no such anchor",
+        "README.md:8: #notes-2: no such anchor",
+        "README.md:9: ../outside.md: outside the repository",
+        "README.md:9: docs/results.md#notes-2: no such anchor",
+        "check_links: 2 files, 5 broken links",
+    ]
+
+
+def test_bad_input_is_one_line_and_status_2(tmp_path):
+    result = run(tmp_path / "no_folder")
+    assert result.returncode == 2
+    assert result.stderr.strip() == f"check_links.py: {tmp_path / 'no_folder'}: no such folder"
+    result = run(tmp_path, tmp_path / "absent.md")
+    assert result.returncode == 2
+    assert "absent.md: no such file" in result.stderr
