@@ -3,9 +3,14 @@
 and every #anchor is an <a id="..."> or a heading of the linked file (GitHub's heading anchors).
 Links to web addresses are not checked (nothing is fetched), nor links inside code.
 
+Without files, it also checks the sections that every tracked text file names by quoting them,
+as code and study comments do (docs/results.md "A memory"; also with a comma, or wrapped over
+comment lines): the quoted words must stand in that Markdown file.
+
 Usage: check_links.py ROOT [FILE.md ...]
-  Without files, every *.md file git tracks under ROOT. Prints one line per broken link
-  (file:line: target: why) and a summary; exits 1 if a link is broken, 2 on bad input."""
+  Without files, every *.md file git tracks under ROOT. Prints one line per broken link or
+  quoted section (file:line: target: why) and a summary; exits 1 if one is broken, 2 on bad
+  input."""
 import functools
 import pathlib
 import re
@@ -19,6 +24,12 @@ HEADING = re.compile(r"^(#{1,6})\s+(.*?)\s*#*\s*$")
 FENCE = re.compile(r"^\s*(```|~~~)")
 CODE_SPAN = re.compile(r"`[^`]*`")
 WEB_ADDRESS = re.compile(r"^[a-z][a-z0-9+.-]*:", re.IGNORECASE)  # https:, mailto:, ...
+# A section named by quoting it: `docs/results.md "A memory"` or `docs/results.md, "A memory"`
+# (`README "Studies"` for README.md), the words perhaps wrapped over comment lines (`# ` or `// `
+# before each).
+COMMENT_BREAK = r"\n[ \t]*(?:#+|//+)"
+QUOTED_SECTION = re.compile(r"\b(README|[\w./-]+\.md),?(?:[ \t]|" + COMMENT_BREAK + r"|\n)+"
+                            r"\(?\"([A-Z](?:[^\"\n]|" + COMMENT_BREAK + r")*)\"")
 
 
 def github_anchor(heading):
@@ -70,12 +81,36 @@ def broken_links(path, root):
                 yield number, target, "no such anchor"
 
 
+def folded(text):
+    return " ".join(text.split())
+
+
+def broken_quoted_sections(path, root):
+    """(line number, reference, why) of each quoted section of `path` its Markdown file lacks."""
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (UnicodeDecodeError, IsADirectoryError):
+        return
+    for match in QUOTED_SECTION.finditer(text):
+        markdown = root / ("README.md" if match.group(1) == "README" else match.group(1))
+        if not markdown.is_file():
+            continue  # a path relative to somewhere else, or no file: not a section reference
+        words = folded(re.sub(COMMENT_BREAK, " ", match.group(2)))
+        if words not in folded(markdown.read_text(encoding="utf-8")):
+            line = text.count("\n", 0, match.start()) + 1
+            yield line, f'{match.group(1)} "{words}"', "no such text"
+
+
+def tracked_files(root, pattern):
+    listed = subprocess.run(["git", "-C", str(root), "ls-files", pattern], check=True,
+                            capture_output=True, text=True).stdout.split()
+    return [root / name for name in listed]
+
+
 def markdown_files(root, names):
     if names:
         return [pathlib.Path(name).resolve() for name in names]
-    listed = subprocess.run(["git", "-C", str(root), "ls-files", "*.md"], check=True,
-                            capture_output=True, text=True).stdout.split()
-    return [root / name for name in listed]
+    return tracked_files(root, "*.md")
 
 
 def main(argv):
@@ -97,7 +132,16 @@ def main(argv):
             shown = path.relative_to(root) if path.is_relative_to(root) else path
             print(f"{shown}:{number}: {target}: {why}")
             broken += 1
-    print(f"check_links: {len(files)} files, {broken} broken links")
+    summary = f"check_links: {len(files)} files, {broken} broken links"
+    if not argv[2:]:
+        sources, broken_sections = tracked_files(root, "*"), 0
+        for path in sources:
+            for number, reference, why in broken_quoted_sections(path, root):
+                print(f"{path.relative_to(root)}:{number}: {reference}: {why}")
+                broken_sections += 1
+        summary += f"; {len(sources)} files, {broken_sections} broken quoted sections"
+        broken += broken_sections
+    print(summary)
     return 1 if broken else 0
 
 

@@ -1,5 +1,6 @@
-"""scripts/check_links.py: the project's Markdown files link only to files and anchors that exist;
-and on files made here, each kind of broken link is found and each kind of good one passes."""
+"""scripts/check_links.py: the project's Markdown files link only to files and anchors that exist,
+and its comments quote only sections that exist; on files made here, each kind of broken link or
+quoted section is found and each kind of good one passes."""
 
 import subprocess
 import sys
@@ -62,3 +63,25 @@ def test_bad_input_is_one_line_and_status_2(tmp_path):
     result = run(tmp_path, tmp_path / "absent.md")
     assert result.returncode == 2
     assert "absent.md: no such file" in result.stderr
+
+
+def test_quoted_sections_of_tracked_files_are_checked_across_comment_lines(tmp_path):
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "eval").mkdir()
+    (tmp_path / "README.md").write_text("# Title\n## Studies on a cluster\n")
+    (tmp_path / "docs" / "findings.md").write_text("**A memory: hardly a time-out.**\n")
+    (tmp_path / "eval" / "policy.h").write_text(
+        "// See docs/findings.md \"A memory: hardly\n"
+        "// a time-out\" and README \"Studies on a cluster\".\n"
+        "// Broken: (docs/findings.md, \"A memory that forgets\").\n")
+    (tmp_path / "study.yaml").write_text("# docs/findings.md \"Nothing\n# here\"\nkey: 1\n")
+    (tmp_path / "data.bin").write_bytes(bytes([0xff, 0xfe, 0x00]))
+    subprocess.run(["git", "init", "-q", str(tmp_path)], check=True)
+    subprocess.run(["git", "-C", str(tmp_path), "add", "."], check=True)
+    result = run(tmp_path)
+    assert result.returncode == 1
+    assert result.stdout.splitlines() == [
+        'eval/policy.h:3: docs/findings.md "A memory that forgets": no such text',
+        'study.yaml:1: docs/findings.md "Nothing here": no such text',
+        "check_links: 2 files, 0 broken links; 5 files, 2 broken quoted sections",
+    ]
