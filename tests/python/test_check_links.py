@@ -37,7 +37,8 @@ def write_docs(tmp_path):
         "[f](https://example.org/nowhere), `[g](docs/in_code.md)`.\n"
         "```\n[h](docs/in_a_fence.md)\n```\n"
         "Broken: [i](docs/missing.md), [j](docs/results.md#nope), [k](#notes-2),\n"
-        "[l](../outside.md), [m](docs/results.md#notes-2).\n")
+        "[l](../outside.md), [m](docs/results.md#notes-2), [a wrapped\n"
+        "link](#nowhere).\n")
     return tmp_path
 
 
@@ -52,7 +53,8 @@ def test_every_kind_of_broken_link_is_found_and_good_links_pass(tmp_path):
         "README.md:8: #notes-2: no such anchor",
         "README.md:9: ../outside.md: outside the repository",
         "README.md:9: docs/results.md#notes-2: no such anchor",
-        "check_links: 2 files, 5 broken links",
+        "README.md:10: #nowhere: no such anchor",
+        "check_links: 2 files, 6 broken links",
     ]
 
 
