@@ -69,7 +69,7 @@ def test_memoryless_members_average_their_actions(tmp_path):
     result = ensemble("--out", tmp_path / "ensemble.pt", *members)
     assert result.returncode == 0, result.stderr
     loaded = torch.jit.load(str(tmp_path / "ensemble.pt"))
-    obs = torch.rand(4, OBSERVATION_SIZE)
+    obs = torch.rand(4, OBSERVATION_SIZE, generator=torch.Generator().manual_seed(4))
     expected = torch.stack([torch.jit.load(str(m))(obs) for m in members]).mean(0)
     assert torch.allclose(loaded(obs), expected)
     assert not hasattr(loaded, "recurrent_size")
@@ -89,8 +89,9 @@ def test_recurrent_members_step_their_own_slices_of_the_state(tmp_path):
     assert torch.equal(state, torch.zeros(3, 5))
     members = [torch.jit.load(str(path)) for path in (small, plain, large)]
     small_state, large_state = torch.zeros(3, 2), torch.zeros(3, 3)
+    draws = torch.Generator().manual_seed(5)
     for _ in range(3):  # the memories carry over: a misplaced slice shows by the second step
-        obs = torch.rand(3, OBSERVATION_SIZE)
+        obs = torch.rand(3, OBSERVATION_SIZE, generator=draws)
         action, state = loaded.step(obs, state)
         small_action, small_state = members[0].step(obs, small_state)
         large_action, large_state = members[2].step(obs, large_state)
