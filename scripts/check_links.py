@@ -86,6 +86,11 @@ def folded(text):
     return " ".join(text.split())
 
 
+@functools.lru_cache(maxsize=None)
+def folded_text_of(markdown):
+    return folded(markdown.read_text(encoding="utf-8"))
+
+
 def broken_quoted_sections(path, root):
     """(line number, reference, why) of each quoted section of `path` its Markdown file lacks."""
     try:
@@ -97,7 +102,7 @@ def broken_quoted_sections(path, root):
         if not markdown.is_file():
             continue  # a path relative to somewhere else, or no file: not a section reference
         words = folded(re.sub(COMMENT_BREAK, " ", match.group(2)))
-        if words not in folded(markdown.read_text(encoding="utf-8")):
+        if words not in folded_text_of(markdown):
             line = text.count("\n", 0, match.start()) + 1
             yield line, f'{match.group(1)} "{words}"', "no such text"
 

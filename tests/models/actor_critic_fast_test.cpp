@@ -68,10 +68,9 @@ void ExpectGradientsClose(FastActorCritic& fast, ActorCritic& reference) {
   }
 }
 
-// The reference gradients come from a float64 copy of the model. Both the fast passes and LibTorch
-// sum thousands of float32 terms per convolution weight, each in its own order (LibTorch's depends
-// on the CPU's vector width), so two float32 results can differ by more than the 1e-4 a gradient
-// error would exceed; against float64 only the fast passes' own rounding remains.
+// The reference comes from a float64 copy of the model. The fast passes and LibTorch in float32
+// sum thousands of terms per convolution weight, each in its own order, so both results carry
+// rounding errors; against float64 only the fast passes' own remain.
 ActorCritic DoublePrecisionCopy(ActorCritic& model, const ActorCriticOptions& options) {
   ActorCritic copy(options);
   torch::NoGradGuard no_grad;
