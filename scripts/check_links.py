@@ -108,9 +108,13 @@ def broken_quoted_sections(path, root):
 
 
 def tracked_files(root, pattern):
-    listed = subprocess.run(["git", "-C", str(root), "ls-files", pattern], check=True,
-                            capture_output=True, text=True).stdout.split()
-    return [root / name for name in listed]
+    listed = subprocess.run(["git", "-C", str(root), "ls-files", pattern], capture_output=True,
+                            text=True)
+    if listed.returncode != 0:
+        print(f"check_links.py: {root}: not a git checkout (name the Markdown files instead)",
+              file=sys.stderr)
+        sys.exit(2)
+    return [root / name for name in listed.stdout.split()]
 
 
 def markdown_files(root, names):
