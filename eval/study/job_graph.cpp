@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdlib>
 #include <map>
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -14,6 +15,14 @@ namespace {
 
 // Rough costs on the 2-core reference machine, for the ETA and the start order only.
 constexpr double kPpoStepsPerSecond = 35'000.0;
+// A PPO run's update share of its time at the paper's 4 passes per rollout, which scales with the
+// passes (ppo.n_epochs), and a memory's (policy.recurrent_size > 0) factor on the whole run.
+// Measured on `best` (15M steps, two runs at a time): 226, 303, 408 and 600 s at 2, 4, 6 and 10
+// passes (a line of 47 s a pass from 124 s), with a memory 520 s at 4 (studies/best_knobs.yaml,
+// docs/results/learner.md "The learner's last untouched").
+constexpr double kPpoPaperPasses = 4.0;
+constexpr double kPpoUpdateShareAtPaperPasses = 0.6;
+constexpr double kPpoMemoryFactor = 1.75;
 constexpr double kVaeSecondsPerSeed = 12.0;
 // Measured: 43,000 episodes of 43 models (ensembles and recurrent students among them) in 443 s.
 constexpr double kEvaluationEpisodesPerSecond = 100.0;
@@ -75,6 +84,34 @@ double StudentSeconds(const std::vector<std::string>& options) {
     }
   }
   return seconds;
+}
+
+// The number a run's arguments last set `key` to (pairs of "--set key=value"), if positive.
+std::optional<double> LastPositiveSetting(const std::vector<std::string>& args,
+                                          std::string_view key) {
+  std::optional<double> setting;
+  for (std::size_t i = 0; i + 1 < args.size(); ++i) {
+    const std::string_view assignment = args[i + 1];
+    if (args[i] != "--set" || assignment.substr(0, key.size()) != key ||
+        assignment.substr(key.size(), 1) != "=") {
+      continue;
+    }
+    const std::string value(assignment.substr(key.size() + 1));
+    char* end = nullptr;
+    const double number = std::strtod(value.c_str(), &end);
+    setting = *end == '\0' ? std::optional<double>(number) : std::nullopt;
+  }
+  return setting && *setting > 0.0 ? setting : std::nullopt;
+}
+
+// A PPO run's rough cost from its steps and its arguments' passes per rollout and memory. A value
+// that is not a positive number scales nothing: train_ppo refuses it before any job runs.
+double PpoRunSeconds(std::int64_t steps, const std::vector<std::string>& args) {
+  const double passes = LastPositiveSetting(args, "ppo.n_epochs").value_or(kPpoPaperPasses);
+  const double share = kPpoUpdateShareAtPaperPasses;
+  const double memory = LastPositiveSetting(args, "policy.recurrent_size") ? kPpoMemoryFactor : 1.0;
+  return static_cast<double>(steps) / kPpoStepsPerSecond * memory *
+         (1.0 - share + share * passes / kPpoPaperPasses);
 }
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
@@ -163,8 +200,9 @@ StudyJob PpoRunJob(const StudySpec& spec, const PpoConfigSpec& config, int seed,
                    const std::filesystem::path& out, const std::string& id,
                    const std::map<std::string, std::size_t>& vae_jobs) {
   const std::filesystem::path dir = out / id;
-  StudyJob job = NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
-                        static_cast<double>(steps) / kPpoStepsPerSecond);
+  // Its cost is estimated from its arguments, once they are complete.
+  StudyJob job =
+      NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json", 0.0);
   job.resume_args = {"--resume", dir.string()};
   job.resume_marker = dir / "training_state.pt";
   if (config.extractor != "baseline") {
@@ -181,6 +219,7 @@ StudyJob PpoRunJob(const StudySpec& spec, const PpoConfigSpec& config, int seed,
                                    "--out", dir.string()});
   AppendOverrides(job.args, spec.ppo_overrides);
   AppendOverrides(job.args, config.overrides);
+  job.estimated_s = PpoRunSeconds(steps, job.args);
   return job;
 }
 
@@ -198,6 +237,7 @@ void AddFineTuneJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
                                out, FineTuneFolder(fine_tune.name, k).string(), vae_jobs);
       AppendOverrides(job.args, {"policy.init=" + student_policy.string()});
       AppendOverrides(job.args, fine_tune.overrides);
+      job.estimated_s = PpoRunSeconds(spec.StepsOf(fine_tune), job.args);
       job.check_configuration = k == 0;
       job.dependencies.push_back(policy_jobs.at(student_policy.string()));
       policy_jobs[FineTunePolicyFile(out, fine_tune.name, k).string()] = AddJob(jobs, job);

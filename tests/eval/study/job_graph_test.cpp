@@ -249,6 +249,32 @@ TEST(JobGraphTest, AStudentsEstimatedCostGrowsWithTheStepsItPlays) {
   EXPECT_DOUBLE_EQ(Find(jobs, "students/bad/seed_0").estimated_s, plain);  // refused later
 }
 
+// A PPO run's estimated cost: its update share (0.6 at the paper's 4 passes) scales with its
+// passes per rollout, and a memory multiplies the whole by 1.75; the last setting counts, study
+// settings first, then the configuration's, then a fine-tune's.
+TEST(JobGraphTest, APpoRunsEstimatedCostGrowsWithItsPassesAndItsMemory) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.ppo_overrides = {"ppo.n_epochs=10"};
+  spec.ppo_configs = {
+      {"paper", "baseline", "", true, {"ppo.n_epochs=4"}},
+      {"ten", "baseline", "", true, {}},
+      {"two", "baseline", "", true, {"ppo.n_epochs=2"}},
+      {"memory", "baseline", "", true, {"ppo.n_epochs=4", "policy.recurrent_size=64"}},
+      {"bad", "baseline", "", true, {"ppo.n_epochs=x"}}};
+  spec.ensembles = {{"pair", {"paper", "paper"}, 1, std::nullopt, std::nullopt}};
+  spec.students = {{"taught", "pair", "paper", {}, 1, ""}};
+  spec.fine_tunes = {{"tuned", "taught", {"ppo.n_epochs=2"}, 0, 1, ""}};
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const double paper = Find(jobs, "ppo/paper/seed_0").estimated_s;
+  EXPECT_GT(paper, 0.0);
+  EXPECT_DOUBLE_EQ(Find(jobs, "ppo/ten/seed_0").estimated_s, 1.9 * paper);  // 0.4 + 0.6 * 10/4
+  EXPECT_DOUBLE_EQ(Find(jobs, "ppo/two/seed_0").estimated_s, 0.7 * paper);
+  EXPECT_DOUBLE_EQ(Find(jobs, "ppo/memory/seed_0").estimated_s, 1.75 * paper);
+  EXPECT_DOUBLE_EQ(Find(jobs, "ppo/bad/seed_0").estimated_s, paper);  // refused later
+  EXPECT_DOUBLE_EQ(Find(jobs, "fine_tunes/tuned/seed_0").estimated_s, 0.7 * paper);
+}
+
 TEST(JobGraphTest, TheVaeFiguresAreAJobOnTheDatasetWhenAsked) {
   const TemporaryFolder folder;
   StudySpec spec = TinySpec(folder);
