@@ -18,8 +18,8 @@ constexpr double kPpoStepsPerSecond = 35'000.0;
 // A PPO run's update share of its time at the paper's 4 passes per rollout, which scales with the
 // passes (ppo.n_epochs), and a memory's (policy.recurrent_size > 0) factor on the whole run.
 // Measured on `best` (15M steps, two runs at a time): 226, 303, 408 and 600 s at 2, 4, 6 and 10
-// passes (a line of 47 s a pass from 124 s), with a memory 520 s at 4 (studies/best_knobs.yaml,
-// docs/results/learner.md "The learner's last untouched").
+// passes, a line of 47 s a pass from 124 s (studies/best_knobs.yaml, docs/results/learner.md
+// "The learner's last untouched"); with a memory, 520 s at 4 (README "Speed").
 constexpr double kPpoPaperPasses = 4.0;
 constexpr double kPpoUpdateShareAtPaperPasses = 0.6;
 constexpr double kPpoMemoryFactor = 1.75;
