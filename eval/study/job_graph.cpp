@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <initializer_list>
 #include <map>
-#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -86,32 +86,17 @@ double StudentSeconds(const std::vector<std::string>& options) {
   return seconds;
 }
 
-// The number a run's arguments last set `key` to (pairs of "--set key=value"), if positive.
-std::optional<double> LastPositiveSetting(const std::vector<std::string>& args,
-                                          std::string_view key) {
-  std::optional<double> setting;
-  for (std::size_t i = 0; i + 1 < args.size(); ++i) {
-    const std::string_view assignment = args[i + 1];
-    if (args[i] != "--set" || assignment.substr(0, key.size()) != key ||
-        assignment.substr(key.size(), 1) != "=") {
-      continue;
-    }
-    const std::string value(assignment.substr(key.size() + 1));
-    char* end = nullptr;
-    const double number = std::strtod(value.c_str(), &end);
-    setting = *end == '\0' ? std::optional<double>(number) : std::nullopt;
-  }
-  return setting && *setting > 0.0 ? setting : std::nullopt;
-}
-
-// A PPO run's rough cost from its steps and its arguments' passes per rollout and memory. A value
-// that is not a positive number scales nothing: train_ppo refuses it before any job runs.
-double PpoRunSeconds(std::int64_t steps, const std::vector<std::string>& args) {
-  const double passes = LastPositiveSetting(args, "ppo.n_epochs").value_or(kPpoPaperPasses);
+// A PPO run's rough cost from its steps and the passes per rollout and memory its settings
+// (`chain`, in the order train_ppo reads them) give it. A value that is not a positive number
+// scales nothing: train_ppo refuses it before any job runs.
+double PpoRunSeconds(std::int64_t steps, std::initializer_list<const Overrides*> chain) {
+  const double passes = LastSetting(chain, "ppo.n_epochs", kPpoPaperPasses);
+  const double pass_scale = passes > 0.0 ? passes / kPpoPaperPasses : 1.0;  // false for NaN
+  const double memory =
+      LastSetting(chain, "policy.recurrent_size", 0.0) > 0.0 ? kPpoMemoryFactor : 1.0;
   const double share = kPpoUpdateShareAtPaperPasses;
-  const double memory = LastPositiveSetting(args, "policy.recurrent_size") ? kPpoMemoryFactor : 1.0;
   return static_cast<double>(steps) / kPpoStepsPerSecond * memory *
-         (1.0 - share + share * passes / kPpoPaperPasses);
+         (1.0 - share + share * pass_scale);
 }
 
 void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides) {
@@ -200,9 +185,8 @@ StudyJob PpoRunJob(const StudySpec& spec, const PpoConfigSpec& config, int seed,
                    const std::filesystem::path& out, const std::string& id,
                    const std::map<std::string, std::size_t>& vae_jobs) {
   const std::filesystem::path dir = out / id;
-  // Its cost is estimated from its arguments, once they are complete.
-  StudyJob job =
-      NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json", 0.0);
+  StudyJob job = NewJob(id, "train_ppo", {"--extractor", config.extractor}, dir / "summary.json",
+                        PpoRunSeconds(steps, {&spec.ppo_overrides, &config.overrides}));
   job.resume_args = {"--resume", dir.string()};
   job.resume_marker = dir / "training_state.pt";
   if (config.extractor != "baseline") {
@@ -219,7 +203,6 @@ StudyJob PpoRunJob(const StudySpec& spec, const PpoConfigSpec& config, int seed,
                                    "--out", dir.string()});
   AppendOverrides(job.args, spec.ppo_overrides);
   AppendOverrides(job.args, config.overrides);
-  job.estimated_s = PpoRunSeconds(steps, job.args);
   return job;
 }
 
@@ -237,7 +220,8 @@ void AddFineTuneJobs(std::vector<StudyJob>& jobs, const StudySpec& spec,
                                out, FineTuneFolder(fine_tune.name, k).string(), vae_jobs);
       AppendOverrides(job.args, {"policy.init=" + student_policy.string()});
       AppendOverrides(job.args, fine_tune.overrides);
-      job.estimated_s = PpoRunSeconds(spec.StepsOf(fine_tune), job.args);
+      job.estimated_s = PpoRunSeconds(
+          spec.StepsOf(fine_tune), {&spec.ppo_overrides, &start.overrides, &fine_tune.overrides});
       job.check_configuration = k == 0;
       job.dependencies.push_back(policy_jobs.at(student_policy.string()));
       policy_jobs[FineTunePolicyFile(out, fine_tune.name, k).string()] = AddJob(jobs, job);

@@ -274,14 +274,7 @@ const std::set<std::string> kStudyStudentOptions = {"out", "seed", "resume", "pr
 // The memory size `config`'s runs are trained with: the last policy.recurrent_size of the
 // study-wide then the configuration's overrides (0, train_ppo's default, when none sets it).
 double RecurrentSize(const StudySpec& spec, const PpoConfigSpec& config) {
-  const std::string key = "policy.recurrent_size=";
-  double size = 0.0;
-  for (const Overrides* overrides : {&spec.ppo_overrides, &config.overrides}) {
-    for (const std::string& assignment : *overrides) {
-      if (assignment.rfind(key, 0) == 0) size = ParseNumber(assignment.substr(key.size()));
-    }
-  }
-  return size;
+  return LastSetting({&spec.ppo_overrides, &config.overrides}, "policy.recurrent_size", 0.0);
 }
 
 // distill_policy's options as "--name value" pairs; the script checks the names and values
@@ -416,6 +409,18 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
 }
 
 }  // namespace
+
+double LastSetting(std::initializer_list<const Overrides*> chain, const std::string& key,
+                   double fallback) {
+  const std::string prefix = key + "=";
+  double value = fallback;
+  for (const Overrides* overrides : chain) {
+    for (const std::string& assignment : *overrides) {
+      if (assignment.rfind(prefix, 0) == 0) value = ParseNumber(assignment.substr(prefix.size()));
+    }
+  }
+  return value;
+}
 
 int EnsembleSpec::MemberSeed(std::size_t member, int k) const {
   const auto earlier =

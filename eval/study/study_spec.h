@@ -33,6 +33,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <optional>
 #include <string>
@@ -44,6 +45,11 @@ namespace colav {
 
 /// "key=value" overrides passed to a program with --set, in file order.
 using Overrides = std::vector<std::string>;
+
+/// The number the last assignment of `key` in `chain` (overrides in the order a program reads
+/// them) spells: NaN when its value is not one number, `fallback` when none assigns `key`.
+double LastSetting(std::initializer_list<const Overrides*> chain, const std::string& key,
+                   double fallback);
 
 struct VaeSpec {
   std::string name;
