@@ -270,6 +270,11 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "ppo.max_grad_norm", [](Run & o) -> auto& { return o.ppo.max_grad_norm; },
           "global gradient-norm clip", 0.0, 1e6)
       .Number(
+          "ppo.std_max", [](Run & o) -> auto& { return o.ppo.std_max; },
+          "the action distribution's largest std: its log std is clamped to log(std_max) at the "
+          "start and after each Adam step; 0: unbounded (SB3's)",
+          0.0, 1e6)
+      .Number(
           "ppo.learning_rate", [](Run & o) -> auto& { return o.ppo.adam.learning_rate; },
           "Adam learning rate", 0.0, 1.0)
       .Coded("ppo.learning_rate_schedule",

@@ -30,6 +30,10 @@ struct PpoOptions {
   double gamma = 0.999;
   double gae_lambda = 0.98;
   double max_grad_norm = 0.5;
+  /// The action distribution's largest std: the log std is clamped to log(std_max) when the
+  /// updater starts and after each Adam step, so that the entropy bonus cannot widen the clipped
+  /// Gaussian far past the action box (best's std grows to 64-124). 0: unbounded (SB3's).
+  double std_max = 0.0;
   /// Time-outs end the return like a terminal state (the reference's training) instead of being
   /// bootstrapped with gamma * V(final observation) (Stable-Baselines3's rule).
   bool timeouts_terminal = false;

@@ -11,6 +11,7 @@ namespace colav {
 PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
     : options_(options),
       policy_(model, std::max(options.batch_size, options.n_envs)),
+      log_std_(model->log_std()),
       optimizer_(model->TrainableParameters(), options.adam),
       rows_(options.batch_size),
       actions_(static_cast<std::size_t>(options.batch_size) * kActionSize),
@@ -28,6 +29,14 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
     });
     if (!critics) actor_gradients_.push_back(policy_.gradients()[i]);
   }
+  BoundStd();
+}
+
+void PpoUpdater::BoundStd() {
+  if (options_.std_max <= 0.0) return;
+  const float largest = static_cast<float>(std::log(options_.std_max));
+  float* log_std = log_std_.data_ptr<float>();
+  for (int j = 0; j < kActionSize; ++j) log_std[j] = std::min(log_std[j], largest);
 }
 
 void PpoUpdater::ZeroActorGradients() {
@@ -109,6 +118,7 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
       if (actor_held_) ZeroActorGradients();
       const double norm = GradientNorm(policy_.gradients());
       optimizer_.Step(policy_.gradients(), ClipCoefficient(norm, options_.max_grad_norm));
+      BoundStd();
 
       stats.policy_gradient_loss += loss.policy_gradient_loss;
       stats.value_loss += loss.value_loss;

@@ -63,10 +63,13 @@ class PpoUpdater {
   /// the episode starts of its sequences.
   void SetSequences(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
   void CheckParametersFinite() const;
+  /// Clamps the log std to log(options_.std_max), if set.
+  void BoundStd();
   void ZeroActorGradients();
 
   PpoOptions options_;
   FastActorCritic policy_;
+  torch::Tensor log_std_;  ///< the model's, shared
   Adam optimizer_;
   std::int64_t n_updates_ = 0;
   bool actor_held_ = false;

@@ -147,5 +147,35 @@ TEST(PpoUpdaterTest, AHeldActorLeavesAllButTheCriticsOwnParametersBitIdentical) 
   }
 }
 
+// ppo.std_max: a log std that starts above log(std_max) is clamped when the updater starts, and a
+// strong entropy bonus, which widens the std at every step, pushes it no further than log(std_max);
+// unbounded (0, the default) the same update widens it past its start. A bound above the start
+// leaves it alone.
+TEST(PpoUpdaterTest, StdMaxBoundsTheStdAtTheStartAndAfterEveryStep) {
+  PpoOptions options = SmallOptions();
+  options.loss.ent_coef = 1.0;  // d loss / d log std = sum - 1 per minibatch: widening
+  torch::manual_seed(3);
+  const RolloutBuffer buffer = SyntheticRollout(options);
+  ActorCriticOptions model_options;
+  model_options.log_std_init = 1.0;  // std e = 2.72
+
+  const auto log_std_after = [&](double std_max, bool update) {
+    options.std_max = std_max;
+    ActorCritic model(model_options);
+    PpoUpdater updater(model, options);
+    if (update) {
+      auto generator = at::make_generator<at::CPUGeneratorImpl>(1);
+      updater.Update(buffer, generator);
+    }
+    return std::vector<float>(model->log_std().data_ptr<float>(),
+                              model->log_std().data_ptr<float>() + kActionSize);
+  };
+  const float log_two = std::log(2.0f);
+  for (const float log_std : log_std_after(2.0, false)) EXPECT_EQ(log_std, log_two);
+  for (const float log_std : log_std_after(2.0, true)) EXPECT_EQ(log_std, log_two);
+  for (const float log_std : log_std_after(10.0, false)) EXPECT_EQ(log_std, 1.0f);
+  for (const float log_std : log_std_after(0.0, true)) EXPECT_GT(log_std, 1.0f);
+}
+
 }  // namespace
 }  // namespace colav
