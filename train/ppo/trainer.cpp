@@ -327,6 +327,10 @@ PpoRunSummary TrainPpo(const PpoRunOptions& options, const nlohmann::json& resol
                      : fmt::format(", its log std replaced by {} (policy.log_std_init)",
                                    options.model.log_std_init));
   }
+  if (options.ppo.std_max > 0.0) {
+    spdlog::info("the action std is bounded at {} (ppo.std_max; a wider start is narrowed to it)",
+                 options.ppo.std_max);
+  }
   if (options.ppo.critic_warmup_steps > 0) {
     spdlog::info("the critic trains alone, the actor held, until step {} (ppo.critic_warmup_steps)",
                  options.ppo.critic_warmup_steps);
