@@ -342,7 +342,10 @@ class Scheduler {
       running_.erase(entry);
       local_change_ = true;
       const StudyJob& job = jobs_[i];
-      const bool ok = WIFEXITED(status) && WEXITSTATUS(status) == 0 && JobComplete(job);
+      // A stop that reached the program as it ended, its outputs complete (mpirun ending a rank
+      // just then), leaves a finished job: the next run would only skip it.
+      const bool exited_cleanly = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+      const bool ok = (exited_cleanly || summary_.stopped) && JobComplete(job);
       if (taken_over_.erase(i) > 0) {
         states_[i] = JobState::kPending;  // the rank that took it over finishes it
       } else if (ok) {
