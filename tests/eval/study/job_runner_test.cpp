@@ -38,24 +38,17 @@ JobRunSummary RunOneStoppedJob(const testing_util::TemporaryFolder& folder, bool
 }
 
 // A stop that reaches a job as its program ends, its outputs already complete (mpirun ending a
-// rank just then), counts the job as finished, not as one to resume: the next run would skip it
-// as complete, and no run would ever say it finished.
-TEST(JobRunnerTest, AJobStoppedWithItsOutputsCompleteHasFinished) {
-  const testing_util::TemporaryFolder folder;
-  const JobRunSummary summary = RunOneStoppedJob(folder, /*complete=*/true);
-  EXPECT_TRUE(summary.stopped);
-  EXPECT_EQ(summary.finished, 1);
-  EXPECT_EQ(summary.failed, 0);
-  EXPECT_TRUE(summary.completed_study);
-}
-
-TEST(JobRunnerTest, AJobStoppedWithoutItsOutputsResumesLater) {
-  const testing_util::TemporaryFolder folder;
-  const JobRunSummary summary = RunOneStoppedJob(folder, /*complete=*/false);
-  EXPECT_TRUE(summary.stopped);
-  EXPECT_EQ(summary.finished, 0);
-  EXPECT_EQ(summary.failed, 0);
-  EXPECT_FALSE(summary.completed_study);
+// rank just then), counts the job as finished: the next run would skip it as complete, and no run
+// would ever say it finished. Without its outputs, the job is one to resume.
+TEST(JobRunnerTest, AStoppedJobHasFinishedExactlyWhenItsOutputsAreComplete) {
+  for (const bool complete : {true, false}) {
+    const testing_util::TemporaryFolder folder;
+    const JobRunSummary summary = RunOneStoppedJob(folder, complete);
+    EXPECT_TRUE(summary.stopped) << complete;
+    EXPECT_EQ(summary.finished, complete ? 1 : 0);
+    EXPECT_EQ(summary.failed, 0) << complete;
+    EXPECT_EQ(summary.completed_study, complete);
+  }
 }
 
 }  // namespace
