@@ -14,7 +14,9 @@ namespace colav {
 namespace {
 
 // Rough costs on the 2-core reference machine, for the ETA and the start order only.
-constexpr double kPpoStepsPerSecond = 35'000.0;
+// Measured: 35 runs of `best` and its one-setting variants at 4 passes (15M steps, two runs at a
+// time, studies/best_knobs.yaml, best_std.yaml, best_timeouts.yaml) took 300-391 s, median 305.
+constexpr double kPpoStepsPerSecond = 45'000.0;
 // A PPO run's update share of its time at the paper's 4 passes per rollout, which scales with the
 // passes (ppo.n_epochs), and a memory's (policy.recurrent_size > 0) factor on the whole run.
 // Measured on `best` (15M steps, two runs at a time): 226, 303, 408 and 600 s at 2, 4, 6 and 10
