@@ -123,9 +123,24 @@ void BatchedEnvironment::ResetWorld(int world) { ResetWorld(world, OwnOutputs())
 
 void BatchedEnvironment::ResetWorld(int world, const BatchedOutputs& outputs) {
   StartEpisode(world, &outputs.observations[static_cast<std::size_t>(world) * observation_size_]);
+  WriteCriticObservation(world, critic_observations_);
   outputs.terminated[world] = outputs.truncated[world] = 0;
   outputs.rewards[world] = 0.0f;
   finished_episodes_[world].reset();
+}
+
+void BatchedEnvironment::ObserveVesselsForCritic(int vessels) {
+  critic_vessels_ = vessels;
+  const std::size_t size = static_cast<std::size_t>(num_envs_) * critic_observation_size();
+  critic_observations_.assign(size, 0.0f);
+  final_critic_observations_.assign(size, 0.0f);
+}
+
+void BatchedEnvironment::WriteCriticObservation(int world, std::vector<float>& rows) const {
+  if (critic_vessels_ == 0) return;
+  colav::WriteCriticObservation(
+      worlds_[world]->world(), critic_vessels_,
+      rows.data() + static_cast<std::ptrdiff_t>(world) * critic_observation_size());
 }
 
 void BatchedEnvironment::StepWorld(int world, const double* action) {
@@ -184,9 +199,11 @@ void BatchedEnvironment::StepWorld(int world, const Action* action, const Batche
   finished_episodes_[world] = result.episode;
   if (result.terminated || result.truncated) {
     std::copy(observation, observation + observation_size_, &outputs.final_observations[row]);
+    WriteCriticObservation(world, final_critic_observations_);
     ++histories_[world].episode;
     StartEpisode(world, observation);
   }
+  WriteCriticObservation(world, critic_observations_);
 }
 
 void BatchedEnvironment::Restore(const std::vector<WorldHistory>& histories) {
@@ -231,6 +248,7 @@ void BatchedEnvironment::ReplayWorld(int world, const WorldHistory& history) {
     }
   }
   histories_[world].actions = actions;
+  WriteCriticObservation(world, critic_observations_);
 }
 
 std::uint64_t BatchedEnvironment::EpisodeSeed(int world, std::uint64_t episode) const {

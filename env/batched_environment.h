@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "env/critic_observation.h"
 #include "env/environment_spec.h"
 #include "env/scenario.h"
 #include "env/step_results.h"
@@ -95,6 +96,15 @@ class BatchedEnvironment : public OwnedStepResults {
   /// Prepares world's next episode, unless it is no longer wanted; any thread, once per schedule.
   void BuildNextEpisode(int world);
 
+  /// From now on each reset and step also writes every world's critic observation of its
+  /// `vessels` nearest moving vessels (critic_observation.h): critic_observations(), one row of
+  /// critic_observation_size() floats per world, and for a world whose episode just ended
+  /// final_critic_observations(), its last state's. For train_ppo's privileged critic.
+  void ObserveVesselsForCritic(int vessels);
+  int critic_observation_size() const { return CriticObservationSize(critic_vessels_); }
+  const float* critic_observations() const { return critic_observations_.data(); }
+  const float* final_critic_observations() const { return final_critic_observations_.data(); }
+
   /// Every world's history, for a checkpoint.
   const std::vector<WorldHistory>& histories() const { return histories_; }
   /// Puts every world back where `histories` (one per world, from histories()) left it by
@@ -123,6 +133,9 @@ class BatchedEnvironment : public OwnedStepResults {
   template <typename Action>
   void StepWorld(int world, const Action* action, const BatchedOutputs& outputs);
   void ReplayWorld(int world, const WorldHistory& history);
+  /// World `world`'s row of `rows` (critic_observations_ or final_critic_observations_) from its
+  /// current state; nothing unless ObserveVesselsForCritic was called.
+  void WriteCriticObservation(int world, std::vector<float>& rows) const;
   /// Orders each thread's share of the worlds by the cost of their last step, dearest first, so
   /// the world a thread may still be stepping when the other has nothing left is its cheapest
   /// (the wait at the end of a step was about 8 % of the threads' time).
@@ -140,6 +153,8 @@ class BatchedEnvironment : public OwnedStepResults {
   /// The world stepped as loop index i; each thread's share as ThreadPool::ShareStart splits them.
   std::vector<int> step_order_;
   std::vector<std::uint64_t> step_cost_;  ///< of each world's last step, in clock ticks
+  int critic_vessels_ = 0;                ///< ObserveVesselsForCritic's; 0: none written
+  std::vector<float> critic_observations_, final_critic_observations_;
 };
 
 }  // namespace colav

@@ -42,6 +42,8 @@ class MovingObstacle {
 
   const VesselObstacleSpec& spec() const { return spec_; }
   const Eigen::Vector2d& position() const { return position_; }
+  /// m/s, world frame: speed along the course.
+  const Eigen::Vector2d& velocity() const { return velocity_; }
   const ConvexPolygon& hull() const { return hull_; }
 
  private:

@@ -53,9 +53,10 @@ void OrthogonalInit(const torch::Tensor& weight, double gain, torch::Generator& 
 }
 
 MlpExtractorImpl::MlpExtractorImpl(std::int64_t features_dim,
-                                   const std::vector<std::int64_t>& hidden_sizes) {
+                                   const std::vector<std::int64_t>& hidden_sizes,
+                                   std::int64_t critic_inputs) {
   policy_net = register_module("policy_net", TanhMlp(features_dim, hidden_sizes));
-  value_net = register_module("value_net", TanhMlp(features_dim, hidden_sizes));
+  value_net = register_module("value_net", TanhMlp(features_dim + critic_inputs, hidden_sizes));
 }
 
 ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::move(options)) {
@@ -66,6 +67,9 @@ ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::mov
   TORCH_CHECK(!options_.separate_critic_memory ||
                   (options_.recurrent_size > 0 && options_.value_trains_memory),
               "a separate critic memory needs recurrent_size > 0 and value_trains_memory");
+  TORCH_CHECK(options_.critic_vessels >= 0 &&
+                  (options_.critic_vessels == 0 || options_.recurrent_size == 0),
+              "a privileged critic (critic_vessels > 0) is for memoryless models");
   if (options_.recurrent_size > 0) {
     recurrent_ =
         register_module("recurrent", torch::nn::GRUCell(features_dim, options_.recurrent_size));
@@ -75,7 +79,8 @@ ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::mov
                                         torch::nn::GRUCell(features_dim, options_.recurrent_size));
   }
   mlp_extractor_ = register_module(
-      "mlp_extractor", MlpExtractor(features_dim + options_.recurrent_size, options_.hidden_sizes));
+      "mlp_extractor", MlpExtractor(features_dim + options_.recurrent_size, options_.hidden_sizes,
+                                    options_.critic_observation_size()));
   const std::int64_t latent = options_.hidden_sizes.back();
   action_net_ = register_module("action_net", torch::nn::Linear(latent, kActionSize));
   value_net_ = register_module("value_net", torch::nn::Linear(latent, 1));
@@ -114,11 +119,18 @@ void ActorCriticImpl::Initialise() {
 }
 
 std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
-    const torch::Tensor& observations) {
+    const torch::Tensor& observations, const torch::Tensor& critic_observations) {
   TORCH_CHECK(!recurrent_, "a recurrent model steps with forward_recurrent");
+  const std::int64_t privileged = options_.critic_observation_size();
+  TORCH_CHECK(privileged == 0 ? !critic_observations.defined()
+                              : critic_observations.defined() && critic_observations.dim() == 2 &&
+                                    critic_observations.size(1) == privileged,
+              "the critic observations must match critic_vessels");
   const torch::Tensor features = features_extractor_->forward(observations);
+  const torch::Tensor critic_input =
+      privileged == 0 ? features : torch::cat({features, critic_observations}, 1);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(features)),
-          value_net_->forward(mlp_extractor_->value_net->forward(features))};
+          value_net_->forward(mlp_extractor_->value_net->forward(critic_input))};
 }
 
 std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward_recurrent(

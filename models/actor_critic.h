@@ -35,6 +35,7 @@
 #include <utility>
 #include <vector>
 
+#include "env/critic_observation.h"
 #include "env/environment_spec.h"
 #include "models/feature_extractor.h"
 
@@ -63,6 +64,11 @@ struct ActorCriticOptions {
   /// Whether the critic reads a GRU of its own (SB3-contrib's RecurrentPPO default) instead of the
   /// actor's; each trains on its own loss. Needs recurrent_size > 0 and value_trains_memory.
   bool separate_critic_memory = false;
+  /// A privileged critic (asymmetric actor-critic): its trunk also reads the true motion of this
+  /// many nearest moving vessels (env/critic_observation.h), which only training computes. The
+  /// actor, and so the exported policy, sees the observation alone; the exported file has no
+  /// value(obs). 0: the critic reads what the actor reads (the paper's). Memoryless models only.
+  int critic_vessels = 0;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 
   /// Whether the deterministic action of some action is the expected clipped one.
@@ -71,12 +77,15 @@ struct ActorCriticOptions {
   }
   /// Values of a step's state: recurrent_size, twice that with separate_critic_memory.
   std::int64_t state_size() const { return recurrent_size * (separate_critic_memory ? 2 : 1); }
+  /// Values of a sample's critic observation (critic_vessels' rows).
+  std::int64_t critic_observation_size() const { return CriticObservationSize(critic_vessels); }
 };
 
-/// The two separate trunks (SB3's MlpExtractor).
+/// The two separate trunks (SB3's MlpExtractor); the critic's reads critic_inputs more values.
 class MlpExtractorImpl : public torch::nn::Module {
  public:
-  MlpExtractorImpl(std::int64_t features_dim, const std::vector<std::int64_t>& hidden_sizes);
+  MlpExtractorImpl(std::int64_t features_dim, const std::vector<std::int64_t>& hidden_sizes,
+                   std::int64_t critic_inputs = 0);
 
   torch::nn::Sequential policy_net{nullptr};  ///< Linear, Tanh, Linear, Tanh, ...
   torch::nn::Sequential value_net{nullptr};
@@ -88,8 +97,10 @@ class ActorCriticImpl : public torch::nn::Module {
   explicit ActorCriticImpl(ActorCriticOptions options);
 
   /// observations [B, 6 + 180 * scans] (FeatureExtractorImpl::observation_size()) ->
-  /// (action mean [B, 2], value [B, 1]).
-  std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations);
+  /// (action mean [B, 2], value [B, 1]). A privileged critic also reads critic_observations
+  /// [B, critic_observation_size()].
+  std::pair<torch::Tensor, torch::Tensor> forward(const torch::Tensor& observations,
+                                                  const torch::Tensor& critic_observations = {});
 
   /// One step of a recurrent policy: observations [B, n] and states [B, state_size] (the state
   /// before these observations; 0 at an episode's start) -> (action mean [B, 2], value [B, 1],

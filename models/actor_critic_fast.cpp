@@ -128,6 +128,7 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
       features_dim_(static_cast<int>(model_->features_extractor()->features_dim())),
       scans_(static_cast<int>(model_->features_extractor()->options().scans)),
       observation_size_(static_cast<int>(model_->features_extractor()->observation_size())),
+      critic_observation_size_(static_cast<int>(model_->options().critic_observation_size())),
       extractor_trainable_(model_->features_extractor()->trainable()),
       parameters_(model_->TrainableParameters()),
       gradients_(ZerosLike(parameters_)),
@@ -183,9 +184,12 @@ FastActorCritic::FastActorCritic(ActorCritic model, int max_batch)
       features_(static_cast<std::size_t>(features_dim_) * max_batch),
       trunk_input_(recurrent_size() > 0 ? static_cast<std::size_t>(actor_.in_size()) * max_batch
                                         : 0),
-      critic_trunk_input_(model_->critic_recurrent() ? trunk_input_.size() : 0),
+      critic_trunk_input_(model_->critic_recurrent() || critic_observation_size_ > 0
+                              ? static_cast<std::size_t>(critic_.in_size()) * max_batch
+                              : 0),
+      predict_critic_rows_(critic_observation_size_ > 0 ? max_batch : 0),
       d_features_actor_(static_cast<std::size_t>(actor_.in_size()) * max_batch),
-      d_features_critic_(d_features_actor_.size()),
+      d_features_critic_(static_cast<std::size_t>(critic_.in_size()) * max_batch),
       d_perception_(
           scans_ > 1 ? static_cast<std::size_t>(features_dim_ - kNavigationSize) * max_batch : 0) {
   TORCH_CHECK(perception_.in_size() == kNumRays, "the perception stack must read 180 values");
@@ -234,15 +238,22 @@ FastLayer FastActorCritic::Bind(FastLayer::Kind kind, const torch::Tensor& weigh
 }
 
 void FastActorCritic::Predict(const float* observations, int B, float* mean, float* value,
-                              float* states) {
+                              float* states, const float* critic_observations) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
   TORCH_CHECK((states != nullptr) == (gru_.has_value()),
               "a recurrent model predicts from states, a memoryless one without");
+  TORCH_CHECK((critic_observations != nullptr) == (critic_observation_size_ > 0),
+              "a privileged critic predicts from critic observations, another one without");
   for (int b = 0; b < B; ++b) {
     rows_[b] = observations + static_cast<std::ptrdiff_t>(b) * observation_size_;
     if (gru_) state_rows_[b] = states + static_cast<std::ptrdiff_t>(b) * state_size();
+    if (critic_observations != nullptr) {
+      predict_critic_rows_[b] =
+          critic_observations + static_cast<std::ptrdiff_t>(b) * critic_observation_size_;
+    }
   }
   if (gru_) SetSequences(state_rows_.data(), nullptr, B);  // B sequences of one step
+  if (critic_observations != nullptr) SetCriticObservations(predict_critic_rows_.data());
   ForwardObservations(rows_.data(), B);
   for (int b = 0; b < B; ++b) {
     for (int j = 0; j < kActionSize; ++j) mean[b * kActionSize + j] = mean_[j * B + b];
@@ -264,6 +275,11 @@ void FastActorCritic::SetSequences(const float* const* initial_states, const std
   initial_states_ = initial_states;
   reset_ = reset;
   sequences_ = sequences;
+}
+
+void FastActorCritic::SetCriticObservations(const float* const* rows) {
+  TORCH_CHECK(critic_observation_size_ > 0, "SetCriticObservations is for privileged critics");
+  critic_rows_ = rows;
 }
 
 void FastActorCritic::Features(const float* observations, int count, float* features) {
@@ -306,8 +322,17 @@ void FastActorCritic::ForwardExtractor(const float* const* rows, int B) {
 void FastActorCritic::ForwardFromFeatures(int B) {
   TORCH_CHECK(B <= max_batch_, "batch larger than FastActorCritic's max_batch");
   if (gru_) ForwardRecurrent(B);
+  if (critic_observation_size_ > 0) GatherCriticObservations(B);
   mean_ = actor_.Forward(TrunkInput(), B);
   value_ = critic_.Forward(CriticTrunkInput(), B);
+}
+
+void FastActorCritic::GatherCriticObservations(int B) {
+  TORCH_CHECK(critic_rows_ != nullptr, "a privileged critic needs SetCriticObservations first");
+  const std::size_t features = static_cast<std::size_t>(features_dim_) * B;
+  std::copy_n(features_.data(), features, critic_trunk_input_.data());
+  GatherRows(critic_rows_, B, 0, critic_observation_size_, B,
+             critic_trunk_input_.data() + features);
 }
 
 // The GRUs' states over the sequences of SetSequences, beside the features in the trunks' inputs.

@@ -66,9 +66,10 @@ class FastActorCritic {
 
   /// observations [B, observation_size] (row-major) -> action mean [B, 2] and value [B]
   /// (row-major). A recurrent model also takes `states` [B, state_size] (row-major), the states
-  /// before these observations, and replaces them by the states after.
-  void Predict(const float* observations, int B, float* mean, float* value,
-               float* states = nullptr);
+  /// before these observations, and replaces them by the states after; a privileged critic
+  /// `critic_observations` [B, critic_observation_size] (row-major).
+  void Predict(const float* observations, int B, float* mean, float* value, float* states = nullptr,
+               const float* critic_observations = nullptr);
   /// Extractor output of `count` observations [count, observation_size] -> features
   /// [count, features_dim] (row-major); any count.
   void Features(const float* observations, int count, float* features);
@@ -79,6 +80,11 @@ class FastActorCritic {
   /// sequence s; reset[t * sequences + s] != 0 where an episode starts (its state is 0 there).
   /// The pointers must stay valid until the backward.
   void SetSequences(const float* const* initial_states, const std::uint8_t* reset, int sequences);
+
+  /// For a privileged critic, before a training forward: rows[b] points to sample b's critic
+  /// observation (critic_observation_size values). The pointers must stay valid until the
+  /// backward.
+  void SetCriticObservations(const float* const* rows);
 
   /// Training forward of the B samples whose observation rows (length observation_size) are
   /// `rows`.
@@ -108,16 +114,21 @@ class FastActorCritic {
   int recurrent_size() const { return static_cast<int>(model_->options().recurrent_size); }
   /// Values of a step's state (ActorCriticOptions::state_size).
   int state_size() const { return static_cast<int>(model_->options().state_size()); }
+  /// Values of a sample's critic observation; 0 unless the critic is privileged.
+  int critic_observation_size() const { return critic_observation_size_; }
 
  private:
   void ForwardExtractor(const float* const* rows, int B);
   void ForwardFromFeatures(int B);
   /// The actor's input of the last forward: features_, or [features; GRU states] when recurrent.
   const float* TrunkInput() const { return gru_ ? trunk_input_.data() : features_.data(); }
-  /// The critic's: the actor's, or [features; its own GRU's states].
+  /// The critic's: the actor's, [features; its own GRU's states], or [features; critic
+  /// observations] for a privileged critic.
   const float* CriticTrunkInput() const {
-    return critic_gru_ ? critic_trunk_input_.data() : TrunkInput();
+    return critic_gru_ || critic_observation_size_ > 0 ? critic_trunk_input_.data() : TrunkInput();
   }
+  /// critic_trunk_input_ = [features_; the rows of SetCriticObservations].
+  void GatherCriticObservations(int B);
   void ForwardRecurrent(int B);
   void ForwardMemory(FastGru& gru, const float* initial, int B, float* trunk_input);
   void BackwardMemory(FastGru& gru, float* d_trunk, float* d_features, int B);
@@ -130,16 +141,19 @@ class FastActorCritic {
   int features_dim_;
   int scans_;
   int observation_size_;
+  int critic_observation_size_;
   bool extractor_trainable_;
   std::vector<torch::Tensor> parameters_;
   std::vector<torch::Tensor> gradients_;
   torch::Tensor log_std_, log_std_grad_;
   FastLayerStack perception_, actor_, critic_;
-  std::vector<const float*> rows_;         // observation rows of Predict and Features
-  std::vector<float> perception_input_;    // [180, scans * B]
-  std::vector<float> features_;            // [features_dim, B]
-  std::vector<float> trunk_input_;         // [features_dim + recurrent_size, B], recurrent only
-  std::vector<float> critic_trunk_input_;  // the same, separate critic memory only
+  std::vector<const float*> rows_;             // observation rows of Predict and Features
+  std::vector<float> perception_input_;        // [180, scans * B]
+  std::vector<float> features_;                // [features_dim, B]
+  std::vector<float> trunk_input_;             // [features_dim + recurrent_size, B], recurrent only
+  std::vector<float> critic_trunk_input_;      // separate critic memory or privileged critic only
+  const float* const* critic_rows_ = nullptr;  // SetCriticObservations'
+  std::vector<const float*> predict_critic_rows_;            // Predict's
   std::vector<float> d_features_actor_, d_features_critic_;  // [trunk input width, B]
   std::vector<float> d_perception_;                          // [P, scans * B], for scans > 1
   std::optional<FastGru> gru_;                               ///< recurrent models only

@@ -114,10 +114,14 @@ std::string ValueReturnSource(ActorCriticImpl& model, const std::string& rest) {
          LinearSource("h", "value_net") + rest + "\n";
 }
 
+// A privileged critic's value needs what only training computes: such a file has no value(obs).
 std::string MemorylessSource(ActorCriticImpl& model) {
-  return "def forward(self, obs: Tensor) -> Tensor:\n"
-         "    f = self.features(obs)\n" +
-         ActionReturnSource(model, "") +
+  std::string source =
+      "def forward(self, obs: Tensor) -> Tensor:\n"
+      "    f = self.features(obs)\n" +
+      ActionReturnSource(model, "");
+  if (model.options().critic_vessels > 0) return source;
+  return source +
          "def value(self, obs: Tensor) -> Tensor:\n"
          "    f = self.features(obs)\n" +
          ValueReturnSource(model, "");

@@ -10,8 +10,9 @@
 //                                     action E[clip(u, -1, 1)], u ~ N(mean, (c * std)^2), through
 //                                     expected_clipped_action(mean) and the buffer
 //                                     deterministic_std [2] (c times the trained std);
-//   value(obs) -> [B, 1];  features(obs) -> [B, 6 + scans * P] (the extractor's output, [B, 18]
-//   for one scan and the paper's extractors).
+//   value(obs) -> [B, 1] (none for a privileged critic, ActorCriticOptions::critic_vessels > 0,
+//   whose value also read what only training computes);  features(obs) -> [B, 6 + scans * P]
+//   (the extractor's output, [B, 18] for one scan and the paper's extractors).
 //   Observation layout: indices 0-5 navigation [u, v, r, cte/100, heading error, look-ahead
 //   heading error], 6-185 the 180 closeness values (ray i at -pi + (i+1) * 2 degrees), then the
 //   earlier scans' 180 values each, newest first, when scans > 1.

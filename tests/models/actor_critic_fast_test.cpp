@@ -169,6 +169,73 @@ INSTANTIATE_TEST_SUITE_P(Extractors, FastActorCriticPredictTest,
                                            std::tuple{ExtractorKind::kBaseline, 3},
                                            std::tuple{ExtractorKind::kVaeDeep, 3}));
 
+// A privileged critic (critic_vessels 2): its trunk reads [features; critic observations]. The
+// training passes, whose critic gradient reaches a trainable extractor through the feature rows
+// only, and Predict, against autograd; changing the critic observations moves the value alone.
+class FastPrivilegedCriticTest : public ::testing::TestWithParam<std::tuple<ExtractorKind, bool>> {
+};
+
+TEST_P(FastPrivilegedCriticTest, ForwardGradientsAndPredictMatchAutograd) {
+  const auto [kind, locked] = GetParam();
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options = Options(kind, directory.path(), locked);
+  options.critic_vessels = 2;
+  ActorCritic model(options);
+  FastActorCritic fast(model, kBatch);
+  ASSERT_EQ(fast.critic_observation_size(), 2 * kCriticValuesPerVessel);
+  ASSERT_EQ(model->mlp_extractor()->value_net->parameters()[0].size(1),
+            fast.features_dim() + 2 * kCriticValuesPerVessel);
+
+  const torch::Tensor obs = Observations(kBatch, model);
+  const torch::Tensor critic_obs = torch::randn({kBatch, fast.critic_observation_size()});
+  const torch::Tensor grad_mean = torch::randn({kBatch, kActionSize});
+  const torch::Tensor grad_value = torch::randn({kBatch});
+  const torch::Tensor grad_log_std = torch::randn({kActionSize});
+  ActorCritic reference = DoublePrecisionCopy(model, options);
+  auto [mean, value] = reference->forward(obs.to(torch::kFloat64), critic_obs.to(torch::kFloat64));
+  ((mean * grad_mean).sum() + (value.squeeze(1) * grad_value).sum() +
+   (reference->log_std() * grad_log_std).sum())
+      .backward();
+
+  std::vector<const float*> rows(kBatch), critic_rows(kBatch);
+  std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
+  fast.Features(obs.data_ptr<float>(), kBatch, features.data());
+  for (int b = 0; b < kBatch; ++b) {
+    rows[b] =
+        fast.extractor_trainable() ? obs[b].data_ptr<float>() : &features[b * fast.features_dim()];
+    critic_rows[b] = critic_obs[b].data_ptr<float>();
+  }
+  fast.SetCriticObservations(critic_rows.data());
+  if (fast.extractor_trainable()) {
+    fast.ForwardObservations(rows.data(), kBatch);
+  } else {
+    fast.ForwardFeatures(rows.data(), kBatch);
+  }
+  ExpectClose(fast.mean(), mean.t(), 1e-5, "mean");
+  ExpectClose(fast.value(), value, 1e-5, "value");
+  torch::Tensor d_mean = grad_mean.t().contiguous();
+  torch::Tensor d_value = grad_value.clone();
+  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
+                kBatch);
+  ExpectGradientsClose(fast, reference);
+
+  std::vector<float> predicted_mean(kBatch * kActionSize), predicted_value(kBatch);
+  fast.Predict(obs.data_ptr<float>(), kBatch, predicted_mean.data(), predicted_value.data(),
+               nullptr, critic_obs.data_ptr<float>());
+  ExpectClose(predicted_mean.data(), mean, 1e-5, "Predict's mean");
+  ExpectClose(predicted_value.data(), value, 1e-5, "Predict's value");
+  const torch::Tensor other_critic_obs = critic_obs + 1.0;
+  std::vector<float> other_mean(kBatch * kActionSize), other_value(kBatch);
+  fast.Predict(obs.data_ptr<float>(), kBatch, other_mean.data(), other_value.data(), nullptr,
+               other_critic_obs.data_ptr<float>());
+  EXPECT_EQ(other_mean, predicted_mean) << "the actor does not read the critic observations";
+  EXPECT_NE(other_value, predicted_value);
+}
+
+INSTANTIATE_TEST_SUITE_P(Extractors, FastPrivilegedCriticTest,
+                         ::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
+                                           std::tuple{ExtractorKind::kVaeShallow, true}));
+
 // Which losses train which memory.
 enum class MemoryTraining {
   kBothLosses,  ///< one GRU, trained by the actor's and the critic's loss

@@ -49,6 +49,24 @@ TEST(PolicyExportTest, BaselinePolicyEqualsTheInProcessPolicy) {
   ExpectExportMatches(model, directory.path() / "policy.pt");
 }
 
+TEST(PolicyExportTest, APrivilegedCriticsPolicyActsAloneAndHasNoValue) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.critic_vessels = 3;
+  ActorCritic model(options);
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.normal_(0.0, 3.0);
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 7, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  const torch::Tensor obs = torch::rand({4, model->features_extractor()->observation_size()});
+  const torch::Tensor critic_obs = torch::randn({4, model->options().critic_observation_size()});
+  const torch::Tensor mean = model->forward(obs, critic_obs).first;
+  EXPECT_TRUE(torch::allclose(loaded.forward({obs}).toTensor(), mean.clamp(-1.0, 1.0), 1e-5, 1e-6));
+  EXPECT_FALSE(loaded.find_method("value").has_value());
+  EXPECT_TRUE(loaded.find_method("features").has_value());
+}
+
 TEST(PolicyExportTest, ASquashingPolicyActsWithTheTanhOfItsMean) {
   testing_util::TemporaryFolder directory;
   ActorCriticOptions options;

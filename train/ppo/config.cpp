@@ -146,6 +146,16 @@ void RequireMemoryForItsTraining(PpoRunOptions& options) {
   }
 }
 
+// A privileged critic beside a memory: its observation would have to travel with the sequences.
+void RequireMemorylessForPrivilegedCritic(PpoRunOptions& options) {
+  if (options.model.critic_vessels > 0 && options.model.recurrent_size > 0) {
+    throw UserError(fmt::format(
+        "policy.critic_vessels = {} (a privileged critic) is for memoryless policies: set "
+        "policy.recurrent_size = 0 (now {})",
+        options.model.critic_vessels, options.model.recurrent_size));
+  }
+}
+
 // A start from a policy file, whose navigation values were never normalised by this run's map.
 void RequireRawNavigationForInitPolicy(PpoRunOptions& options) {
   if (!options.init_policy.empty() && options.ppo.normalize_navigation) {
@@ -325,6 +335,13 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           [](Run & o) -> auto& { return o.model.separate_critic_memory; },
           "give the critic a memory of its own (SB3-contrib's default) instead of the actor's; "
           "each is trained by its own loss")
+      .Number(
+          "policy.critic_vessels", [](Run & o) -> auto& { return o.model.critic_vessels; },
+          "a privileged critic: it also reads the true position, motion and width of this many "
+          "nearest moving vessels within 300 m, in the agent's frame (training only; the policy "
+          "and the test see the observation alone); 0: the critic sees what the actor sees (the "
+          "paper's). Memoryless policies only",
+          0, 16)
       .Bool(
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
           "act with tanh of the Gaussian's sample (deterministic: of its mean) instead of clipping "
@@ -399,6 +416,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireRolloutSizes)
       .Then(RequireWholeSequences)
       .Then(RequireMemoryForItsTraining)
+      .Then(RequireMemorylessForPrivilegedCritic)
       .Then(RequireClippedActionsForDeterministicStd)
       .Then(RequireRawNavigationForInitPolicy)
       .Then(RequireInitPolicyForItsLogStd)

@@ -33,6 +33,7 @@ RolloutCollector::RolloutCollector(const EnvironmentConfig& config,
       bounded_actions_(mean_.size()),
       scratch_values_(env_->num_envs()),
       scratch_means_(kActionSize) {
+  env_->ObserveVesselsForCritic(rules.critic_vessels);
   env_->Reset();
   SeeObservations(true);
 }
@@ -44,6 +45,7 @@ void RolloutCollector::ReplaceWorlds(const std::vector<TrainingScenarioConfig>& 
     history.actions.clear();
   }
   env_ = std::make_unique<BatchedEnvironment>(config_, world_scenarios, threads_, env_seed_);
+  env_->ObserveVesselsForCritic(rules_.critic_vessels);
   env_->Restore(next_episodes);
   reward_scaler_.RestartReturns();
   std::fill(states_.begin(), states_.end(), 0.0f);  // every world starts an episode
@@ -96,11 +98,16 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
     states_.assign(N * state_size, 0.0f);
   }
   float* states = state_size > 0 ? states_.data() : nullptr;
+  const int critic_size = env_->critic_observation_size();
   for (int t = 0; t < buffer.num_steps(); ++t) {
     float* observations = buffer.observations(t);
     std::copy_n(SeenObservations(), N * env_->observation_size(), observations);
     std::copy(states_.begin(), states_.end(), buffer.states(t));
-    policy.Predict(observations, N, mean_.data(), buffer.values(t), states);
+    float* critic_observations = critic_size > 0 ? buffer.critic_observations(t) : nullptr;
+    if (critic_observations) {
+      std::copy_n(env_->critic_observations(), N * critic_size, critic_observations);
+    }
+    policy.Predict(observations, N, mean_.data(), buffer.values(t), states, critic_observations);
     float* actions = buffer.actions(t);
     for (int e = 0; e < N; ++e) {
       // log N(a; mean, std) with a = mean + std * eps only depends on eps.
@@ -144,7 +151,8 @@ bool RolloutCollector::Collect(FastActorCritic& policy, const torch::Tensor& noi
   }
   scratch_states_ = states_;  // the next rollout starts from states_ again
   policy.Predict(SeenObservations(), N, mean_.data(), buffer.last_values(),
-                 state_size > 0 ? scratch_states_.data() : nullptr);
+                 state_size > 0 ? scratch_states_.data() : nullptr,
+                 critic_size > 0 ? env_->critic_observations() : nullptr);
   return true;
 }
 
@@ -165,8 +173,12 @@ void RolloutCollector::ValueFinalObservations(FastActorCritic& policy, int t,
     const int state_size = policy.state_size();
     scratch_states_.assign(states_.begin() + e * state_size,
                            states_.begin() + (e + 1) * state_size);
+    const int critic_size = env_->critic_observation_size();
     policy.Predict(final_observation_.data(), 1, scratch_means_.data(), scratch_values_.data(),
-                   state_size > 0 ? scratch_states_.data() : nullptr);
+                   state_size > 0 ? scratch_states_.data() : nullptr,
+                   critic_size > 0 ? env_->final_critic_observations() +
+                                         static_cast<std::ptrdiff_t>(e) * critic_size
+                                   : nullptr);
     buffer.final_values(t)[e] = scratch_values_[0];
   }
 }

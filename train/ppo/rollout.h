@@ -50,6 +50,9 @@ struct RolloutRules {
   /// (navigation_normalizer.h); the running moments take in each step's new observations, as
   /// SB3's VecNormalize does (not a final observation, which is only normalised).
   bool normalize_navigation = false;
+  /// A privileged critic's nearest vessels (ActorCriticOptions::critic_vessels): the worlds also
+  /// write their critic observations, which the buffer keeps and the critic reads; 0: none.
+  int critic_vessels = 0;
 };
 
 class RolloutCollector {

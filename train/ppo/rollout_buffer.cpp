@@ -6,11 +6,13 @@
 
 namespace colav {
 
-RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size)
+RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size,
+                             int critic_observation_size)
     : num_steps_(num_steps),
       num_envs_(num_envs),
       observation_size_(observation_size),
       state_size_(state_size),
+      critic_observation_size_(critic_observation_size),
       observations_(static_cast<std::size_t>(size()) * observation_size),
       actions_(static_cast<std::size_t>(size()) * kActionSize),
       log_probs_(size()),
@@ -22,7 +24,8 @@ RolloutBuffer::RolloutBuffer(int num_steps, int num_envs, int observation_size, 
       last_values_(num_envs),
       advantages_(size()),
       returns_(size()),
-      states_(static_cast<std::size_t>(size()) * state_size) {}
+      states_(static_cast<std::size_t>(size()) * state_size),
+      critic_observations_(static_cast<std::size_t>(size()) * critic_observation_size) {}
 
 void RolloutBuffer::ComputeReturnsAndAdvantages(double gamma, double lambda) {
   GaeInput input;

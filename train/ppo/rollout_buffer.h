@@ -14,8 +14,10 @@ namespace colav {
 class RolloutBuffer {
  public:
   /// observation_size: floats per observation row (ObservationSize of the environment);
-  /// state_size: the recurrent policy's state size (0: memoryless).
-  RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size = 0);
+  /// state_size: the recurrent policy's state size (0: memoryless); critic_observation_size: a
+  /// privileged critic's observation size (0: none).
+  RolloutBuffer(int num_steps, int num_envs, int observation_size, int state_size = 0,
+                int critic_observation_size = 0);
 
   int num_steps() const { return num_steps_; }
   int num_envs() const { return num_envs_; }
@@ -33,6 +35,10 @@ class RolloutBuffer {
   float* final_values(int t) { return &final_values_[Offset(t, 1)]; }
   /// A recurrent policy's state before step t (0 where an episode starts), state_size each.
   float* states(int t) { return states_.data() + Offset(t, state_size_); }
+  /// A privileged critic's observation at step t, critic_observation_size each.
+  float* critic_observations(int t) {
+    return critic_observations_.data() + Offset(t, critic_observation_size_);
+  }
   /// V of the observations after the last step, one per world.
   float* last_values() { return last_values_.data(); }
 
@@ -50,8 +56,10 @@ class RolloutBuffer {
   const std::vector<float>& advantages() const { return advantages_; }
   const std::vector<float>& returns() const { return returns_; }
   const std::vector<float>& states() const { return states_; }
+  const std::vector<float>& critic_observations() const { return critic_observations_; }
   const std::vector<std::uint8_t>& dones() const { return dones_; }
   int state_size() const { return state_size_; }
+  int critic_observation_size() const { return critic_observation_size_; }
 
  private:
   std::size_t Offset(int t, int width) const {
@@ -62,10 +70,12 @@ class RolloutBuffer {
   int num_envs_;
   int observation_size_;
   int state_size_;
+  int critic_observation_size_;
   std::vector<float> observations_, actions_, log_probs_, values_, rewards_, final_values_;
   std::vector<std::uint8_t> dones_, bootstrapped_;
   std::vector<float> last_values_, advantages_, returns_;
   std::vector<float> states_;
+  std::vector<float> critic_observations_;
 };
 
 }  // namespace colav

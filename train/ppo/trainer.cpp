@@ -89,11 +89,12 @@ class PpoTrainer {
                    ThreadCountOrAllCores(options_.env_threads),
                    DeriveSeed(options_.seed, "worlds", 0),
                    {options_.timeouts_terminal, options_.normalize_reward, options_.gamma,
-                    options_.normalize_navigation}),
+                    options_.normalize_navigation, options.model.critic_vessels}),
         logs_(run_dir_, resume ? std::optional<KeptLogRows>(KeptRows(rollout_start_.counters))
                                : std::nullopt),
         buffer_(options_.n_steps, options_.n_envs, ObservationSize(options.env),
-                static_cast<int>(options.model.state_size())),
+                static_cast<int>(options.model.state_size()),
+                static_cast<int>(options.model.critic_observation_size())),
         finished_summary_(resume && counters_.global_step >= options_.total_steps
                               ? FinishedSummary(run_dir_)
                               : std::nullopt) {

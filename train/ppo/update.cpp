@@ -14,6 +14,7 @@ PpoUpdater::PpoUpdater(ActorCritic model, const PpoOptions& options)
       log_std_(model->log_std()),
       optimizer_(model->TrainableParameters(), options.adam),
       rows_(options.batch_size),
+      critic_rows_(options.batch_size),
       actions_(static_cast<std::size_t>(options.batch_size) * kActionSize),
       old_log_probs_(options.batch_size),
       advantages_(options.batch_size),
@@ -47,14 +48,17 @@ PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t*
   const bool frozen_features = !policy_.extractor_trainable();
   const int width = frozen_features ? policy_.features_dim() : buffer.observation_size();
   const float* source = frozen_features ? features_.data() : buffer.observations().data();
+  const int critic_size = buffer.critic_observation_size();
   for (int b = 0; b < B; ++b) {
     const std::int64_t i = indices[b];
     rows_[b] = source + i * width;
     std::copy_n(&buffer.actions()[i * kActionSize], kActionSize, &actions_[b * kActionSize]);
+    if (critic_size > 0) critic_rows_[b] = buffer.critic_observations().data() + i * critic_size;
     old_log_probs_[b] = buffer.log_probs()[i];
     advantages_[b] = buffer.advantages()[i];
     returns_[b] = buffer.returns()[i];
   }
+  if (critic_size > 0) policy_.SetCriticObservations(critic_rows_.data());
   return {B, actions_.data(), old_log_probs_.data(), advantages_.data(), returns_.data()};
 }
 

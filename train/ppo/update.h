@@ -76,6 +76,7 @@ class PpoUpdater {
   std::vector<torch::Tensor> actor_gradients_;  ///< of every trainable parameter not the critic's
   std::vector<float> features_;  // [rollout, features_dim] when the extractor is frozen
   std::vector<const float*> rows_;
+  std::vector<const float*> critic_rows_;  // a privileged critic's observation rows
   std::vector<float> actions_, old_log_probs_, advantages_, returns_;
   std::vector<float> d_mean_, d_value_;
   std::vector<std::int64_t> epoch_order_;

@@ -325,6 +325,17 @@ TEST(PpoCheckpointTest, ExtendedRunWithASeparateCriticMemoryEqualsTheUninterrupt
                    directory.path());
 }
 
+// A privileged critic's observations are rebuilt with the worlds at a resume; its policy file
+// acts without them and has no value(obs).
+TEST(PpoCheckpointTest, ExtendedRunWithAPrivilegedCriticEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOption("policy.critic_vessels", directory.path(), "3");
+  EXPECT_NE(ReadFile(runs.whole / "updates.csv"), ReadFile(runs.plain / "updates.csv"));
+  const torch::jit::Module policy = torch::jit::load((runs.whole / "policy.pt").string());
+  EXPECT_FALSE(policy.find_method("value").has_value());
+  EXPECT_TRUE(torch::jit::load((runs.plain / "policy.pt").string()).find_method("value"));
+}
+
 // The reward scaler's returns run across the rollouts and episodes.
 TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
   testing_util::TemporaryFolder directory;

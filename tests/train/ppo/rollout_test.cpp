@@ -60,6 +60,46 @@ TEST(RolloutCollectorTest, TheBufferHoldsNormalisedNavigationValues) {
 }
 
 // The buffer keeps the Gaussian samples; the worlds get them clipped, or squashed by tanh.
+// A privileged critic's first sample: the buffer keeps the worlds' critic observations, and the
+// values are those of the critic reading them.
+TEST(RolloutCollectorTest, APrivilegedCriticsBufferHoldsTheWorldsCriticObservations) {
+  constexpr int kWorlds = 8;
+  constexpr std::uint64_t kSeed = 11;
+  constexpr int kVessels = 4;
+  const EnvironmentConfig config;
+  BatchedEnvironment raw(config, kWorlds, 1, kSeed);
+  raw.ObserveVesselsForCritic(kVessels);
+  raw.Reset();
+  const int width = raw.observation_size();
+  const int critic_width = raw.critic_observation_size();
+  const std::vector<float> expected(raw.critic_observations(),
+                                    raw.critic_observations() + kWorlds * critic_width);
+  int present = 0;
+  for (int i = 0; i < kWorlds * kVessels; ++i) present += expected[i * kCriticValuesPerVessel] > 0;
+  ASSERT_GT(present, 0) << "some world starts with a vessel within range";
+
+  RolloutRules rules;
+  rules.critic_vessels = kVessels;
+  RolloutCollector collector(config, std::vector<TrainingScenarioConfig>(kWorlds), 1, kSeed, rules);
+  ActorCriticOptions options;
+  options.critic_vessels = kVessels;
+  FastActorCritic policy(ActorCritic(options), kWorlds);
+  RolloutBuffer buffer(1, kWorlds, width, 0, critic_width);
+  collector.Collect(policy, torch::zeros({1, kWorlds, kActionSize}), buffer,
+                    [](const std::vector<FinishedEpisode>&) { return true; });
+  EXPECT_EQ(std::vector<float>(buffer.critic_observations(0),
+                               buffer.critic_observations(0) + kWorlds * critic_width),
+            expected);
+  std::vector<float> mean(kWorlds * kActionSize), value(kWorlds), blind_value(kWorlds);
+  policy.Predict(buffer.observations(0), kWorlds, mean.data(), value.data(), nullptr,
+                 expected.data());
+  EXPECT_EQ(std::vector<float>(buffer.values(0), buffer.values(0) + kWorlds), value);
+  const std::vector<float> no_vessels(expected.size(), 0.0f);
+  policy.Predict(buffer.observations(0), kWorlds, mean.data(), blind_value.data(), nullptr,
+                 no_vessels.data());
+  EXPECT_NE(blind_value, value);
+}
+
 TEST(RolloutCollectorTest, TheWorldsGetClippedOrSquashedSamples) {
   constexpr int kWorlds = 2;
   constexpr std::uint64_t kSeed = 5;
