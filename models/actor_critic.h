@@ -19,6 +19,10 @@
 // actor's GRU only the actor's loss trains, and a step's state is [actor's state, critic's state].
 // Their weights are orthogonal (gain 1, CleanRL's recurrent PPO), their biases 0.
 //
+// With critic_vessels K > 0 the critic is privileged (asymmetric actor-critic): its trunk reads
+// [features, the true state of the K nearest moving vessels] (env/critic_observation.h), which
+// only training computes; the actor reads the features alone.
+//
 // Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
 // mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std; the GRU's are
 // recurrent.{weight_ih, weight_hh, bias_ih, bias_hh} (gates in PyTorch's order r, z, n), the

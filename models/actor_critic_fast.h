@@ -10,7 +10,9 @@
 //
 // Activations are feature-major ([features, B], see actor_critic_kernels.h). An observation of S
 // range scans runs the perception stack on S * B samples (column k * B + b holds scan k of sample
-// b), whose encodings become feature rows 6 + k * P + p.
+// b), whose encodings become feature rows 6 + k * P + p. A privileged critic's trunk reads the
+// feature rows followed by the critic observation's (SetCriticObservations); its input gradient
+// reaches the extractor through the feature rows only.
 #pragma once
 
 #include <torch/torch.h>
