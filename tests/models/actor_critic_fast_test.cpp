@@ -68,6 +68,39 @@ void ExpectGradientsClose(FastActorCritic& fast, ActorCritic& reference) {
   }
 }
 
+// The reference's outputs on a batch and the gradients a test sends back through them.
+struct ReferencePass {
+  torch::Tensor mean, value;                          // [B, 2], [B, 1]
+  torch::Tensor grad_mean, grad_value, grad_log_std;  // [B, 2], [B], [2]
+};
+
+// The fast training passes over `obs` (through their features when the extractor is frozen): the
+// forward against the reference's mean and value, the backward of its output gradients against
+// the gradients autograd left in `reference`.
+void ExpectTrainingPassesMatch(FastActorCritic& fast, ActorCritic& reference,
+                               const torch::Tensor& obs, const ReferencePass& pass) {
+  const int B = static_cast<int>(obs.size(0));
+  std::vector<float> features(static_cast<std::size_t>(B) * fast.features_dim());
+  fast.Features(obs.data_ptr<float>(), B, features.data());
+  std::vector<const float*> rows(B);
+  for (int b = 0; b < B; ++b) {
+    rows[b] =
+        fast.extractor_trainable() ? obs[b].data_ptr<float>() : &features[b * fast.features_dim()];
+  }
+  if (fast.extractor_trainable()) {
+    fast.ForwardObservations(rows.data(), B);
+  } else {
+    fast.ForwardFeatures(rows.data(), B);
+  }
+  ExpectClose(fast.mean(), pass.mean.t(), 1e-5, "mean");
+  ExpectClose(fast.value(), pass.value, 1e-5, "value");
+  torch::Tensor d_mean = pass.grad_mean.t().contiguous();
+  torch::Tensor d_value = pass.grad_value.clone();
+  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(),
+                pass.grad_log_std.data_ptr<float>(), B);
+  ExpectGradientsClose(fast, reference);
+}
+
 // The reference comes from a float64 copy of the model. The fast passes and LibTorch in float32
 // sum thousands of terms per convolution weight, each in its own order, so both results carry
 // rounding errors; against float64 only the fast passes' own remain.
@@ -100,26 +133,12 @@ TEST_P(FastActorCriticTest, ForwardAndGradientsMatchAutograd) {
                              (reference->log_std() * grad_log_std).sum();
   loss.backward();
 
-  std::vector<const float*> rows(kBatch);
-  for (int b = 0; b < kBatch; ++b) rows[b] = obs[b].data_ptr<float>();
   std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
   fast.Features(obs.data_ptr<float>(), kBatch, features.data());
   ExpectClose(features.data(), reference->features_extractor()->forward(obs.to(torch::kFloat64)),
               1e-5, "features");
-  if (fast.extractor_trainable()) {
-    fast.ForwardObservations(rows.data(), kBatch);
-  } else {
-    for (int b = 0; b < kBatch; ++b) rows[b] = &features[b * fast.features_dim()];
-    fast.ForwardFeatures(rows.data(), kBatch);
-  }
-  ExpectClose(fast.mean(), mean.t(), 1e-5, "mean");
-  ExpectClose(fast.value(), value, 1e-5, "value");
-
-  torch::Tensor d_mean = grad_mean.t().contiguous();
-  torch::Tensor d_value = grad_value.clone();
-  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
-                kBatch);
-  ExpectGradientsClose(fast, reference);
+  ExpectTrainingPassesMatch(fast, reference, obs,
+                            {mean, value, grad_mean, grad_value, grad_log_std});
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -197,27 +216,11 @@ TEST_P(FastPrivilegedCriticTest, ForwardGradientsAndPredictMatchAutograd) {
    (reference->log_std() * grad_log_std).sum())
       .backward();
 
-  std::vector<const float*> rows(kBatch), critic_rows(kBatch);
-  std::vector<float> features(static_cast<std::size_t>(kBatch) * fast.features_dim());
-  fast.Features(obs.data_ptr<float>(), kBatch, features.data());
-  for (int b = 0; b < kBatch; ++b) {
-    rows[b] =
-        fast.extractor_trainable() ? obs[b].data_ptr<float>() : &features[b * fast.features_dim()];
-    critic_rows[b] = critic_obs[b].data_ptr<float>();
-  }
+  std::vector<const float*> critic_rows(kBatch);
+  for (int b = 0; b < kBatch; ++b) critic_rows[b] = critic_obs[b].data_ptr<float>();
   fast.SetCriticObservations(critic_rows.data());
-  if (fast.extractor_trainable()) {
-    fast.ForwardObservations(rows.data(), kBatch);
-  } else {
-    fast.ForwardFeatures(rows.data(), kBatch);
-  }
-  ExpectClose(fast.mean(), mean.t(), 1e-5, "mean");
-  ExpectClose(fast.value(), value, 1e-5, "value");
-  torch::Tensor d_mean = grad_mean.t().contiguous();
-  torch::Tensor d_value = grad_value.clone();
-  fast.Backward(d_mean.data_ptr<float>(), d_value.data_ptr<float>(), grad_log_std.data_ptr<float>(),
-                kBatch);
-  ExpectGradientsClose(fast, reference);
+  ExpectTrainingPassesMatch(fast, reference, obs,
+                            {mean, value, grad_mean, grad_value, grad_log_std});
 
   std::vector<float> predicted_mean(kBatch * kActionSize), predicted_value(kBatch);
   fast.Predict(obs.data_ptr<float>(), kBatch, predicted_mean.data(), predicted_value.data(),
