@@ -58,7 +58,6 @@ PpoMinibatch PpoUpdater::Gather(const RolloutBuffer& buffer, const std::int64_t*
     advantages_[b] = buffer.advantages()[i];
     returns_[b] = buffer.returns()[i];
   }
-  if (critic_size > 0) policy_.SetCriticObservations(critic_rows_.data());
   return {B, actions_.data(), old_log_probs_.data(), advantages_.data(), returns_.data()};
 }
 
@@ -104,6 +103,7 @@ UpdateStats PpoUpdater::Update(const RolloutBuffer& buffer, torch::Generator& ge
       const int B = std::min(options_.batch_size, n - start);
       const PpoMinibatch batch = Gather(buffer, order + start, B);
       if (recurrent) SetSequences(buffer, order + start, B);
+      if (buffer.critic_observation_size() > 0) policy_.SetCriticObservations(critic_rows_.data());
       if (policy_.extractor_trainable()) {
         policy_.ForwardObservations(rows_.data(), B);
       } else {

@@ -55,6 +55,8 @@ class PpoUpdater {
   void set_n_updates(std::int64_t n_updates) { n_updates_ = n_updates; }
 
  private:
+  /// Points rows_ (and critic_rows_ for a privileged critic) at the samples `indices` and copies
+  /// their loss inputs.
   PpoMinibatch Gather(const RolloutBuffer& buffer, const std::int64_t* indices, int B);
   /// The epoch's order of the samples, minibatch after minibatch: shuffled samples, or for a
   /// recurrent policy shuffled whole sequences (sequence_minibatches.h).
