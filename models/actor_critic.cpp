@@ -67,9 +67,7 @@ ActorCriticImpl::ActorCriticImpl(ActorCriticOptions options) : options_(std::mov
   TORCH_CHECK(!options_.separate_critic_memory ||
                   (options_.recurrent_size > 0 && options_.value_trains_memory),
               "a separate critic memory needs recurrent_size > 0 and value_trains_memory");
-  TORCH_CHECK(options_.critic_vessels >= 0 &&
-                  (options_.critic_vessels == 0 || options_.recurrent_size == 0),
-              "a privileged critic (critic_vessels > 0) is for memoryless models");
+  TORCH_CHECK(options_.critic_vessels >= 0, "critic_vessels must not be negative");
   if (options_.recurrent_size > 0) {
     recurrent_ =
         register_module("recurrent", torch::nn::GRUCell(features_dim, options_.recurrent_size));
@@ -118,23 +116,29 @@ void ActorCriticImpl::Initialise() {
   }
 }
 
-std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
-    const torch::Tensor& observations, const torch::Tensor& critic_observations) {
-  TORCH_CHECK(!recurrent_, "a recurrent model steps with forward_recurrent");
+// The critic's trunk input: `input` followed, for a privileged critic, by its observations.
+torch::Tensor ActorCriticImpl::PrivilegedCriticInput(
+    const torch::Tensor& input, const torch::Tensor& critic_observations) const {
   const std::int64_t privileged = options_.critic_observation_size();
   TORCH_CHECK(privileged == 0 ? !critic_observations.defined()
                               : critic_observations.defined() && critic_observations.dim() == 2 &&
                                     critic_observations.size(1) == privileged,
               "the critic observations must match critic_vessels");
+  return privileged == 0 ? input : torch::cat({input, critic_observations}, 1);
+}
+
+std::pair<torch::Tensor, torch::Tensor> ActorCriticImpl::forward(
+    const torch::Tensor& observations, const torch::Tensor& critic_observations) {
+  TORCH_CHECK(!recurrent_, "a recurrent model steps with forward_recurrent");
   const torch::Tensor features = features_extractor_->forward(observations);
-  const torch::Tensor critic_input =
-      privileged == 0 ? features : torch::cat({features, critic_observations}, 1);
+  const torch::Tensor critic_input = PrivilegedCriticInput(features, critic_observations);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(features)),
           value_net_->forward(mlp_extractor_->value_net->forward(critic_input))};
 }
 
 std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward_recurrent(
-    const torch::Tensor& observations, const torch::Tensor& states) {
+    const torch::Tensor& observations, const torch::Tensor& states,
+    const torch::Tensor& critic_observations) {
   TORCH_CHECK(recurrent_, "forward_recurrent needs a model with recurrent_size > 0");
   const torch::Tensor features = features_extractor_->forward(observations);
   const std::int64_t H = options_.recurrent_size;
@@ -149,6 +153,7 @@ std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> ActorCriticImpl::forward
   } else if (!options_.value_trains_memory) {
     critic_input = torch::cat({features, actor_state.detach()}, 1);
   }
+  critic_input = PrivilegedCriticInput(critic_input, critic_observations);
   return {action_net_->forward(mlp_extractor_->policy_net->forward(actor_input)),
           value_net_->forward(mlp_extractor_->value_net->forward(critic_input)), next_states};
 }

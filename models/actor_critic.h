@@ -21,7 +21,8 @@
 //
 // With critic_vessels K > 0 the critic is privileged (asymmetric actor-critic): its trunk reads
 // [features, the true state of the K nearest moving vessels] (env/critic_observation.h), which
-// only training computes; the actor reads the features alone.
+// only training computes; the actor reads the features alone. With a memory the critic's trunk
+// reads [features, the state it reads, the vessels].
 //
 // Parameter names follow SB3's state dict: features_extractor.*, mlp_extractor.policy_net.{0,2,4},
 // mlp_extractor.value_net.{0,2,4}, action_net, value_net, log_std; the GRU's are
@@ -71,7 +72,7 @@ struct ActorCriticOptions {
   /// A privileged critic (asymmetric actor-critic): its trunk also reads the true motion of this
   /// many nearest moving vessels (env/critic_observation.h), which only training computes. The
   /// actor, and so the exported policy, sees the observation alone; the exported file has no
-  /// value(obs). 0: the critic reads what the actor reads (the paper's). Memoryless models only.
+  /// value(obs) (nor step_value). 0: the critic reads what the actor reads (the paper's).
   int critic_vessels = 0;
   std::uint64_t seed = 0;  ///< seeds the initialisation
 
@@ -108,9 +109,10 @@ class ActorCriticImpl : public torch::nn::Module {
 
   /// One step of a recurrent policy: observations [B, n] and states [B, state_size] (the state
   /// before these observations; 0 at an episode's start) -> (action mean [B, 2], value [B, 1],
-  /// state after [B, state_size]).
+  /// state after [B, state_size]). A privileged critic also reads critic_observations as forward.
   std::tuple<torch::Tensor, torch::Tensor, torch::Tensor> forward_recurrent(
-      const torch::Tensor& observations, const torch::Tensor& states);
+      const torch::Tensor& observations, const torch::Tensor& states,
+      const torch::Tensor& critic_observations = {});
 
   /// The parameters the optimiser updates: all but those of a locked encoder, in module order.
   std::vector<torch::Tensor> TrainableParameters() const;
@@ -132,6 +134,8 @@ class ActorCriticImpl : public torch::nn::Module {
 
  private:
   void Initialise();
+  torch::Tensor PrivilegedCriticInput(const torch::Tensor& input,
+                                      const torch::Tensor& critic_observations) const;
 
   ActorCriticOptions options_;
   FeatureExtractor features_extractor_{nullptr};

@@ -327,12 +327,14 @@ void FastActorCritic::ForwardFromFeatures(int B) {
   value_ = critic_.Forward(CriticTrunkInput(), B);
 }
 
+// After the memory's forward: its own memory's rows are in critic_trunk_input_ already, the
+// shared memory's in the actor's trunk input.
 void FastActorCritic::GatherCriticObservations(int B) {
   TORCH_CHECK(critic_rows_ != nullptr, "a privileged critic needs SetCriticObservations first");
-  const std::size_t features = static_cast<std::size_t>(features_dim_) * B;
-  std::copy_n(features_.data(), features, critic_trunk_input_.data());
-  GatherRows(critic_rows_, B, 0, critic_observation_size_, B,
-             critic_trunk_input_.data() + features);
+  const std::size_t read =
+      static_cast<std::size_t>(critic_.in_size() - critic_observation_size_) * B;
+  if (!critic_gru_) std::copy_n(TrunkInput(), read, critic_trunk_input_.data());
+  GatherRows(critic_rows_, B, 0, critic_observation_size_, B, critic_trunk_input_.data() + read);
 }
 
 // The GRUs' states over the sequences of SetSequences, beside the features in the trunks' inputs.

@@ -11,8 +11,8 @@
 // Activations are feature-major ([features, B], see actor_critic_kernels.h). An observation of S
 // range scans runs the perception stack on S * B samples (column k * B + b holds scan k of sample
 // b), whose encodings become feature rows 6 + k * P + p. A privileged critic's trunk reads the
-// feature rows followed by the critic observation's (SetCriticObservations); its input gradient
-// reaches the extractor through the feature rows only.
+// rows it would read otherwise followed by the critic observation's (SetCriticObservations); its
+// input gradient reaches the extractor and memory through the former only.
 #pragma once
 
 #include <torch/torch.h>
@@ -124,12 +124,12 @@ class FastActorCritic {
   void ForwardFromFeatures(int B);
   /// The actor's input of the last forward: features_, or [features; GRU states] when recurrent.
   const float* TrunkInput() const { return gru_ ? trunk_input_.data() : features_.data(); }
-  /// The critic's: the actor's, [features; its own GRU's states], or [features; critic
-  /// observations] for a privileged critic.
+  /// The critic's: the actor's, or [features; its own GRU's states]; a privileged critic's is
+  /// that followed by its critic observations.
   const float* CriticTrunkInput() const {
     return critic_gru_ || critic_observation_size_ > 0 ? critic_trunk_input_.data() : TrunkInput();
   }
-  /// critic_trunk_input_ = [features_; the rows of SetCriticObservations].
+  /// critic_trunk_input_ = [what the critic reads otherwise; the rows of SetCriticObservations].
   void GatherCriticObservations(int B);
   void ForwardRecurrent(int B);
   void ForwardMemory(FastGru& gru, const float* initial, int B, float* trunk_input);

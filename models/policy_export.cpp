@@ -151,7 +151,7 @@ std::string RecurrentCellSource(std::int64_t size, const std::string& cell) {
 }
 
 // step and step_value: the GRU's next state `s`, then the trunks on [features, s]; step_value
-// steps the critic's own GRU when it has one.
+// steps the critic's own GRU when it has one. A privileged critic's policy has no step_value.
 std::string RecurrentSource(ActorCriticImpl& model) {
   const std::int64_t H = model.options().recurrent_size;
   const std::string size = std::to_string(H);
@@ -173,8 +173,10 @@ std::string RecurrentSource(ActorCriticImpl& model) {
          "])\n"
          "def step(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
          next_state("recurrent") + ActionReturnSource(model, ", s") +
-         "def step_value(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
-         next_state(value_cell) + ValueReturnSource(model, ", s") +
+         (model.options().critic_vessels > 0
+              ? std::string()
+              : "def step_value(self, obs: Tensor, state: Tensor) -> Tuple[Tensor, Tensor]:\n" +
+                    next_state(value_cell) + ValueReturnSource(model, ", s")) +
          // Acting from a zero state at every call would look like a policy and be a worse one.
          // (An assert: builtin exceptions such as RuntimeError only compile from Python.)
          "def forward(self, obs: Tensor) -> Tensor:\n"

@@ -27,7 +27,8 @@
 // recurrent_size (int, H; memoryless policies have none) and acts through its state instead:
 //   initial_state(batch: int) -> zeros float32 [batch, H], the state at an episode's start;
 //   step(obs, state [B, H]) -> Tuple[action [B, 2], next state [B, H]], the action as forward's;
-//   step_value(obs, state) -> Tuple[value [B, 1], next state [B, H]];  features(obs) as above.
+//   step_value(obs, state) -> Tuple[value [B, 1], next state [B, H]] (none for a privileged
+//   critic);  features(obs) as above.
 //   A critic with a memory of its own (ActorCriticOptions::separate_critic_memory) steps it in
 //   step_value, through critic_recurrent_cell: its state is kept apart from step's.
 //   Its forward(obs) fails with "AssertionError: recurrent policy: call step(obs, state) starting

@@ -248,13 +248,13 @@ enum class MemoryTraining {
 
 // A recurrent model on 3 sequences of 4 steps (time-major samples), an episode starting at step 2
 // of sequence 1: the fast passes against autograd through forward_recurrent step by step, for
-// each way of training the memory.
-class FastRecurrentTest
-    : public ::testing::TestWithParam<std::tuple<std::tuple<ExtractorKind, bool>, MemoryTraining>> {
-};
+// each way of training the memory, with the paper's critic and with a privileged one (critic
+// observations of 2 vessels after the state the critic reads).
+class FastRecurrentTest : public ::testing::TestWithParam<
+                              std::tuple<std::tuple<ExtractorKind, bool>, MemoryTraining, int>> {};
 
 TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
-  const auto [extractor, memory_training] = GetParam();
+  const auto [extractor, memory_training, critic_vessels] = GetParam();
   const auto [kind, locked] = extractor;
   constexpr int kSequences = 3, kSteps = 4, kMemory = 5, B = kSequences * kSteps;
   testing_util::TemporaryFolder directory;
@@ -262,13 +262,23 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   options.recurrent_size = kMemory;
   options.value_trains_memory = memory_training != MemoryTraining::kActorLoss;
   options.separate_critic_memory = memory_training == MemoryTraining::kSeparate;
+  options.critic_vessels = critic_vessels;
   ActorCritic model(options);
   FastActorCritic fast(model, kBatch);
   ASSERT_EQ(fast.recurrent_size(), kMemory);
   const int state_size = memory_training == MemoryTraining::kSeparate ? 2 * kMemory : kMemory;
   ASSERT_EQ(fast.state_size(), state_size);
+  const int critic_size = critic_vessels * kCriticValuesPerVessel;
+  ASSERT_EQ(model->mlp_extractor()->value_net->parameters()[0].size(1),
+            fast.features_dim() + kMemory + critic_size);
 
   const torch::Tensor obs = Observations(B, model);
+  const torch::Tensor critic_obs = torch::randn({B, critic_size});
+  // The critic observations of samples [start, start + count), or none for the paper's critic.
+  const auto critic_slice = [&](int start, int count) {
+    return critic_size == 0 ? torch::Tensor()
+                            : critic_obs.narrow(0, start, count).to(torch::kFloat64);
+  };
   const torch::Tensor initial = torch::randn({kSequences, state_size});
   std::vector<std::uint8_t> reset(B, 0);
   reset[2 * kSequences + 1] = 1;
@@ -281,8 +291,9 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   for (int t = 0; t < kSteps; ++t) {
     torch::Tensor keep = torch::ones({kSequences, 1}, torch::kFloat64);
     for (int s = 0; s < kSequences; ++s) keep[s][0] = reset[t * kSequences + s] ? 0.0f : 1.0f;
-    auto [mean, value, next] = reference->forward_recurrent(
-        obs.narrow(0, t * kSequences, kSequences).to(torch::kFloat64), state * keep);
+    auto [mean, value, next] =
+        reference->forward_recurrent(obs.narrow(0, t * kSequences, kSequences).to(torch::kFloat64),
+                                     state * keep, critic_slice(t * kSequences, kSequences));
     means.push_back(mean);
     values.push_back(value);
     state = next;
@@ -297,6 +308,9 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   for (int s = 0; s < kSequences; ++s) initial_rows[s] = initial[s].data_ptr<float>();
   std::vector<float> features(static_cast<std::size_t>(B) * fast.features_dim());
   fast.SetSequences(initial_rows.data(), reset.data(), kSequences);
+  std::vector<const float*> critic_rows(B);
+  for (int b = 0; b < B; ++b) critic_rows[b] = critic_obs.data_ptr<float>() + b * critic_size;
+  if (critic_size > 0) fast.SetCriticObservations(critic_rows.data());
   if (fast.extractor_trainable()) {
     fast.ForwardObservations(rows.data(), B);
   } else {
@@ -318,21 +332,23 @@ TEST_P(FastRecurrentTest, SequencesForwardAndBackwardMatchAutograd) {
   torch::Tensor states = initial.clone();
   std::vector<float> predicted_mean(kSequences * kActionSize), predicted_value(kSequences);
   fast.Predict(batch.data_ptr<float>(), kSequences, predicted_mean.data(), predicted_value.data(),
-               states.data_ptr<float>());
-  const auto [step_mean, step_value, step_state] =
-      reference->forward_recurrent(batch.to(torch::kFloat64), initial.to(torch::kFloat64));
+               states.data_ptr<float>(), critic_size > 0 ? critic_obs.data_ptr<float>() : nullptr);
+  const auto [step_mean, step_value, step_state] = reference->forward_recurrent(
+      batch.to(torch::kFloat64), initial.to(torch::kFloat64), critic_slice(0, kSequences));
   ExpectClose(predicted_mean.data(), step_mean, 1e-5, "predicted mean");
   ExpectClose(predicted_value.data(), step_value, 1e-5, "predicted value");
   ExpectClose(states.data_ptr<float>(), step_state, 1e-5, "next states");
 }
 
-// A trainable baseline and a locked VAE encoder, each with every way of training the memory.
+// A trainable baseline and a locked VAE encoder, each with every way of training the memory and
+// both critics.
 INSTANTIATE_TEST_SUITE_P(
     Extractors, FastRecurrentTest,
     ::testing::Combine(::testing::Values(std::tuple{ExtractorKind::kBaseline, false},
                                          std::tuple{ExtractorKind::kVaeShallow, true}),
                        ::testing::Values(MemoryTraining::kBothLosses, MemoryTraining::kActorLoss,
-                                         MemoryTraining::kSeparate)));
+                                         MemoryTraining::kSeparate),
+                       ::testing::Values(0, 2)));
 
 TEST(ActorCriticKernelsTest, TanhIsAccurate) {
   std::vector<float> x;

@@ -212,6 +212,39 @@ TEST(PolicyExportTest, ARecurrentPolicyStepsLikeTheInProcessModel) {
               testing::HasSubstr("states [B, 4] expected"));
 }
 
+// A memory beside a privileged critic: step acts as forward_recurrent does, from the observation
+// and state alone; there is no step_value, whose critic would need the vessels' rows.
+TEST(PolicyExportTest, ARecurrentPrivilegedCriticsPolicyStepsAloneAndHasNoStepValue) {
+  testing_util::TemporaryFolder directory;
+  ActorCriticOptions options;
+  options.recurrent_size = 4;
+  options.critic_vessels = 2;
+  options.hidden_sizes = {16, 8};
+  ActorCritic model(options);
+  torch::NoGradGuard no_grad;
+  model->action_net()->weight.normal_(0.0, 3.0);
+  const std::filesystem::path path = directory.path() / "policy.pt";
+  ExportPolicy(*model, 5, ObservationSettings{}, path);
+  torch::jit::Module loaded = torch::jit::load(path.string());
+  const std::int64_t batch = 3;
+  torch::Tensor state = loaded.get_method("initial_state")({batch}).toTensor();
+  torch::Tensor expected_state = torch::zeros({batch, 4});
+  for (int k = 0; k < 2; ++k) {
+    const torch::Tensor obs = torch::rand({batch, kObservationSize});
+    const torch::Tensor critic_obs = torch::randn({batch, options.critic_observation_size()});
+    const auto [mean, value, next_state] =
+        model->forward_recurrent(obs, expected_state, critic_obs);
+    const auto stepped = loaded.get_method("step")({obs, state}).toTuple()->elements();
+    EXPECT_TRUE(torch::allclose(stepped[0].toTensor(), mean.clamp(-1.0, 1.0), 1e-5, 1e-6))
+        << "step " << k;
+    EXPECT_TRUE(torch::allclose(stepped[1].toTensor(), next_state, 1e-5, 1e-6)) << "step " << k;
+    state = stepped[1].toTensor();
+    expected_state = next_state;
+  }
+  EXPECT_FALSE(loaded.find_method("step_value").has_value());
+  EXPECT_FALSE(loaded.find_method("value").has_value());
+}
+
 // With a memory of its own, the critic's state travels apart: step keeps the actor's half of
 // forward_recurrent's state, step_value the critic's, each from its own initial_state.
 TEST(PolicyExportTest, ASeparateCriticMemoryStepsInStepValue) {

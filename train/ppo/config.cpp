@@ -146,16 +146,6 @@ void RequireMemoryForItsTraining(PpoRunOptions& options) {
   }
 }
 
-// A privileged critic beside a memory: its observation would have to travel with the sequences.
-void RequireMemorylessForPrivilegedCritic(PpoRunOptions& options) {
-  if (options.model.critic_vessels > 0 && options.model.recurrent_size > 0) {
-    throw UserError(fmt::format(
-        "policy.critic_vessels = {} (a privileged critic) is for memoryless policies: set "
-        "policy.recurrent_size = 0 (now {})",
-        options.model.critic_vessels, options.model.recurrent_size));
-  }
-}
-
 // A start from a policy file, whose navigation values were never normalised by this run's map.
 void RequireRawNavigationForInitPolicy(PpoRunOptions& options) {
   if (!options.init_policy.empty() && options.ppo.normalize_navigation) {
@@ -416,7 +406,6 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
       .Then(RequireRolloutSizes)
       .Then(RequireWholeSequences)
       .Then(RequireMemoryForItsTraining)
-      .Then(RequireMemorylessForPrivilegedCritic)
       .Then(RequireClippedActionsForDeterministicStd)
       .Then(RequireRawNavigationForInitPolicy)
       .Then(RequireInitPolicyForItsLogStd)

@@ -336,6 +336,19 @@ TEST(PpoCheckpointTest, ExtendedRunWithAPrivilegedCriticEqualsTheUninterruptedRu
   EXPECT_TRUE(torch::jit::load((runs.plain / "policy.pt").string()).find_method("value"));
 }
 
+// Beside a memory, the critic observations travel with the sequences of the minibatches; the
+// policy file steps without them and has no step_value.
+TEST(PpoCheckpointTest, ExtendedRecurrentRunWithAPrivilegedCriticEqualsTheUninterruptedRun) {
+  testing_util::TemporaryFolder directory;
+  const RunsWithOption runs = TrainWithOptions({{"policy.recurrent_size", "4"},
+                                                {"ppo.sequence_length", "4"},
+                                                {"policy.critic_vessels", "3"}},
+                                               directory.path());
+  const torch::jit::Module policy = torch::jit::load((runs.whole / "policy.pt").string());
+  EXPECT_TRUE(policy.find_method("step").has_value());
+  EXPECT_FALSE(policy.find_method("step_value").has_value());
+}
+
 // The reward scaler's returns run across the rollouts and episodes.
 TEST(PpoCheckpointTest, ExtendedRunWithScaledRewardsEqualsTheUninterruptedRun) {
   testing_util::TemporaryFolder directory;
