@@ -330,7 +330,7 @@ OptionsBinding<PpoRunOptions> PpoRunBinding() {
           "a privileged critic: it also reads the true position, motion and width of this many "
           "nearest moving vessels within 300 m, in the agent's frame (training only; the policy "
           "and the test see the observation alone); 0: the critic sees what the actor sees (the "
-          "paper's). Memoryless policies only",
+          "paper's)",
           0, 16)
       .Bool(
           "policy.squash_actions", [](Run & o) -> auto& { return o.model.squash_actions; },
