@@ -1,5 +1,5 @@
 # Draws docs/recipes_front.png from docs/recipes_front.csv: every recipe measured (mean over 5
-# training seeds, 95 % intervals), ten ensembles of our runs, the rescued helmsmen distilled
+# training seeds, 95 % intervals), eleven ensembles of our runs, the rescued helmsmen distilled
 # into one network, and the authors' agents, collisions against progress and against
 # cross-track error, with the issue's goal (collisions <= 3 %, progress >= 97 %, cross-track
 # error <= 17 m) shaded. Run from the repository's root: gnuplot scripts/recipes_front.gp
