@@ -346,6 +346,10 @@ std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
   if (spec.evaluation.paper_episodes > 0) {
     groups.push_back(GroupOnScenarios(spec, out, "paper", spec.evaluation.paper_episodes, 0));
   }
+  if (spec.evaluation.validation_episodes > 0) {
+    groups.push_back(GroupOnScenarios(spec, out, "validation", spec.evaluation.validation_episodes,
+                                      spec.evaluation.validation_seed));
+  }
   return groups;
 }
 

@@ -37,7 +37,7 @@ struct StudyJob {
 
 /// Models evaluated together, paired, on one scenario set (one evaluate run).
 struct EvaluationGroup {
-  std::string scenario_set;  ///< "study" or "paper": the scenarios it plays, folder eval/<set>
+  std::string scenario_set;         ///< "study", "paper" or "validation": folder eval/<set>
   std::vector<std::string> models;  ///< model names, e.g. "baseline.seed_0", "ref.baseline_3m"
   std::vector<std::filesystem::path> policies;
   int episodes = 0;
@@ -84,7 +84,8 @@ std::vector<PpoRunKind> PpoRunKinds(const StudySpec& spec);
 std::string SeedModelName(const std::string& config, int seed);
 
 /// The evaluation groups of a study: every PPO run and reference agent on the study's scenarios,
-/// and the same on the paper's scenarios when paper_episodes > 0. Each policy runs under the
+/// the same on the paper's scenarios when paper_episodes > 0 and on the validation scenarios when
+/// validation_episodes > 0. Each policy runs under the
 /// observation settings it records or its sidecar gives (evaluate), so models trained under
 /// different settings are still compared paired.
 std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,

@@ -324,7 +324,8 @@ void Figures(std::ostringstream& md, const StudySpec& spec, const std::filesyste
              const ScenarioSetReport& report) {
   const std::string models = "figures/" + set + "_models.png";
   DrawModelsFigure(spec, results, report,
-                   fmt::format("{}: {} scenarios, mean and 95 % CI", spec.name, report.episodes),
+                   fmt::format("{}: {} scenarios (master seed {}), mean and 95 % CI", spec.name,
+                               report.episodes, results.seed),
                    out / models);
   md << "\n![every model on these scenarios](" << models << ")\n";
   const std::string trade_off = "figures/" + set + "_trade_off.png";
@@ -471,6 +472,13 @@ void FineTuneSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// The heading of a scenario set's section.
+std::string ScenarioSetTitle(const std::string& set) {
+  if (set == "paper") return "The paper's test";
+  if (set == "validation") return "Validation, to choose on (not the test)";
+  return "Test";
+}
+
 }  // namespace
 
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
@@ -564,9 +572,9 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     const ScenarioSetReport report =
         SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
     json["scenario_sets"][set] = ToJson(report);
-    md << "\n## " << (set == "paper" ? "The paper's test: " : "Test: ") << report.episodes
-       << " scenarios (master seed " << (set == "paper" ? std::uint64_t{0} : spec.evaluation.seed)
-       << ")\n\n";
+    json["scenario_sets"][set]["seed"] = results.seed;
+    md << "\n## " << ScenarioSetTitle(set) << ": " << report.episodes << " scenarios (master seed "
+       << results.seed << ")\n\n";
     ModelTable(md, report);
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);

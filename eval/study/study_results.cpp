@@ -28,6 +28,7 @@ std::map<std::string, ScenarioSetResults> ReadStudyResults(const StudySpec& spec
     const CsvTable table = ReadCsvTable(file);
     ScenarioSetResults& results = sets[group.scenario_set];
     results.episodes = group.episodes;
+    results.seed = group.seed;
     std::map<std::string, std::vector<double>> columns;
     for (const StudyMetric& metric : StudyMetrics()) {
       columns[metric.name] = NumericColumn(table, metric.column);

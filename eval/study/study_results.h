@@ -1,8 +1,10 @@
 // The per-episode results of a study's evaluations, arranged for statistics: for each scenario
-// set ("study": the study's scenarios, "paper": the paper's 100) and each model, one row per
+// set ("study": the study's scenarios, "paper": the paper's 100, "validation": scenarios to choose
+// on) and each model, one row per
 // scenario in the same order for every model (paired).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -33,6 +35,7 @@ using ModelEpisodes = std::map<std::string, std::vector<double>>;
 
 struct ScenarioSetResults {
   int episodes = 0;
+  std::uint64_t seed = 0;                       ///< the scenarios' master seed
   std::map<std::string, ModelEpisodes> models;  ///< by model name ("baseline.seed_0", "ref.x")
 };
 

@@ -376,9 +376,9 @@ std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
 EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   EvaluationSpec evaluation;
   if (!node) return evaluation;
-  reader.RequireMap(
-      node, "evaluation",
-      {"episodes", "seed", "paper_episodes", "reference_agents", "paper_results", "compare_to"});
+  reader.RequireMap(node, "evaluation",
+                    {"episodes", "seed", "paper_episodes", "validation_episodes", "validation_seed",
+                     "reference_agents", "paper_results", "compare_to"});
   if (node["episodes"]) {
     evaluation.episodes =
         static_cast<int>(reader.Integer(node["episodes"], "evaluation.episodes", 1, 100000));
@@ -390,6 +390,18 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   if (node["paper_episodes"]) {
     evaluation.paper_episodes = static_cast<int>(
         reader.Integer(node["paper_episodes"], "evaluation.paper_episodes", 0, 100000));
+  }
+  if (node["validation_episodes"]) {
+    evaluation.validation_episodes = static_cast<int>(
+        reader.Integer(node["validation_episodes"], "evaluation.validation_episodes", 0, 100000));
+  }
+  if (node["validation_seed"]) {
+    evaluation.validation_seed = static_cast<std::uint64_t>(reader.Integer(
+        node["validation_seed"], "evaluation.validation_seed", 0, 9'007'199'254'740'992));
+  }
+  if (evaluation.validation_episodes > 0 && evaluation.validation_seed == evaluation.seed) {
+    reader.Fail("evaluation.validation_seed",
+                "equals evaluation.seed: the validation scenarios would be the test's");
   }
   if (node["paper_results"]) {
     evaluation.paper_results =

@@ -24,6 +24,9 @@
 //     episodes: 1000                                # scenarios of the study's own table
 //     seed: 1
 //     paper_episodes: 100                           # the paper's table (master seed 0); 0: none
+//     validation_episodes: 1000                     # scenarios to choose on, apart from the
+//     validation_seed: 2                            # test's (another master seed); 0 episodes:
+//                                                   # none (the default)
 //     reference_agents: [../shared/reference-agents/shallow_locked_3m.pt]
 //     paper_results: paper_results.yaml              # the paper's table, printed beside ours
 //     compare_to: baseline                          # the configuration the others are compared
@@ -136,6 +139,10 @@ struct EvaluationSpec {
   int episodes = 1000;
   std::uint64_t seed = 1;
   int paper_episodes = 100;  ///< on master seed 0, for the paper's table; 0 = none
+  /// Scenarios to choose settings on without touching the test's (its own table in the report,
+  /// eval/validation/); 0 = none. Their master seed must differ from `seed`.
+  int validation_episodes = 0;
+  std::uint64_t validation_seed = 2;
   std::vector<std::filesystem::path> reference_agents;
   std::filesystem::path paper_results;  ///< the paper's table (YAML); empty = none
   /// The configuration every other one is compared with (probability of improvement), unless

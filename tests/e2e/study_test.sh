@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The study runner end to end with the real programs at a tiny budget: a bad program key and an
 # ensemble of runs that would observe differently are refused before any work; 2 PPO configurations
-# x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report; a second invocation
+# x 2 seeds (one with a VAE) and 2 ensembles of one run of each run to a report (the test, the
+# paper's and validation scenarios, each on its own master seed); a second invocation
 # skips every job, and one whose study file changed is refused; --plan lists the jobs before and
 # after, creating nothing; a study stopped by SIGTERM during a PPO run exits 130 and the same
 # command then finishes it.
@@ -25,7 +26,7 @@ ppo:
     baseline: {extractor: baseline}
 ensembles:
   pair: {members: [shallow_locked, baseline]}
-evaluation: {episodes: 6, seed: 3, paper_episodes: 4}
+evaluation: {episodes: 6, seed: 3, paper_episodes: 4, validation_episodes: 3, validation_seed: 5}
 YAML
 
 # A bad key of a program is refused before any job runs, naming the job and the key.
@@ -51,7 +52,7 @@ study_refuses mixed "ensembles.pair: the runs of log .* observe differently" "$W
 
 # --plan lists the jobs the command would run and creates nothing.
 "$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --plan >"$WORK/plan.out" || fail "--plan failed"
-grep -q "^12 jobs: 0 complete, 12 to run or resume" "$WORK/plan.out" || fail "plan before the run"
+grep -q "^13 jobs: 0 complete, 13 to run or resume" "$WORK/plan.out" || fail "plan before the run"
 grep -q "^to run .* ensembles/pair/seed_1 *ensemble_policy *ppo/shallow_locked/seed_1, " \
   "$WORK/plan.out" || { cat "$WORK/plan.out"; fail "ensemble job not planned"; }
 [ ! -e "$WORK/run" ] || fail "--plan created the study folder"
@@ -61,26 +62,29 @@ grep -q "^to run .* ensembles/pair/seed_1 *ensemble_policy *ppo/shallow_locked/s
 grep -q "^study_wall_s: " "$WORK/first.out" || fail "no study_wall_s line"
 for file in REPORT.md summary.json data/scans.h5 vae/shallow/seed_0/encoder.pt \
   ppo/shallow_locked/seed_1/policy.pt ppo/baseline/seed_0/policy.pt ensembles/pair/seed_1/policy.pt \
-  eval/study/episodes.csv eval/paper/episodes.csv figures/study_models.png figures/paper_models.png \
+  eval/study/episodes.csv eval/paper/episodes.csv eval/validation/episodes.csv \
+  figures/study_models.png figures/paper_models.png figures/validation_models.png \
   figures/study_trade_off.png figures/paper_trade_off.png \
   figures/training_baseline.png figures/training_shallow_locked.png; do
   [ -s "$WORK/run/$file" ] || fail "missing $file"
 done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
+grep -q "^## Validation, to choose on (not the test): 3 scenarios (master seed 5)$" \
+  "$WORK/run/REPORT.md" || fail "no validation section in the report"
 grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REPORT.md" ||
   fail "no return in the report's probability of improvement"
 grep -q "| PPO runs of | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
   fail "no table of how the runs ended"
 grep -q "^- pair: 2 of \[shallow_locked, baseline\]$" "$WORK/run/REPORT.md" || fail "no ensembles"
-grep -q "12 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
-"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --plan | grep -q "^12 jobs: 12 complete, 0 to" ||
+grep -q "13 jobs run, 0 skipped" "$WORK/first.err" || { cat "$WORK/first.err"; fail "job count"; }
+"$BIN/study" "$WORK/tiny.yaml" --out "$WORK/run" --plan | grep -q "^13 jobs: 13 complete, 0 to" ||
   fail "plan after the run"
 /usr/bin/python3 - "$WORK/run/summary.json" <<'PY' || fail "malformed summary.json"
 import csv, json, os, statistics, sys
 s = json.load(open(sys.argv[1]))
-for name, episodes in (("study", 6), ("paper", 4)):
+for name, episodes, seed in (("study", 6, 3), ("paper", 4, 0), ("validation", 3, 5)):
     sset = s["scenario_sets"][name]
-    assert sset["episodes"] == episodes
+    assert sset["episodes"] == episodes and sset["seed"] == seed, (name, sset["seed"])
     models = {m["name"]: m for m in sset["models"]}
     assert set(models) == {"shallow_locked", "baseline", "pair"}, models.keys()
     for m in models.values():
@@ -123,6 +127,11 @@ for name, episodes in (("study", 6), ("paper", 4)):
     to_finish = poi[0]["metrics"]["progress_to_finish"]
     assert abs(to_finish["probability"] - statistics.fmean(wins)) < 1e-9, (wins, to_finish)
     assert to_finish["low"] <= to_finish["probability"] <= to_finish["high"], to_finish
+# The validation scenarios are other scenarios than the test's (another master seed).
+paths = {name: [r["path_length"] for r in csv.DictReader(open(
+    f"{os.path.dirname(sys.argv[1])}/eval/{name}/episodes.csv")) if r["model"] == "baseline.seed_0"]
+    for name in ("study", "validation")}
+assert paths["study"][:3] != paths["validation"], paths
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
 assert s["ensembles"] == {"pair": {"members": ["shallow_locked", "baseline"], "count": 2}}
 # How each run ended: its seeds' wall-clock, final std and late training episodes.
@@ -137,7 +146,7 @@ grep -q "total_steps: 3072" "$WORK/run/ppo/shallow_locked/seed_1/config.yaml" &&
 grep -q "training seed(s) of 2048 steps (shallow_locked: 3072);" "$WORK/run/REPORT.md" ||
   fail "own steps not in the report"
 
-study_skips_all 12 "$WORK/tiny.yaml" --out "$WORK/run"
+study_skips_all 13 "$WORK/tiny.yaml" --out "$WORK/run"
 
 # A study file changed after its runs finished is refused before any work, naming the setting;
 # the finished runs are not reported as runs of the new file.

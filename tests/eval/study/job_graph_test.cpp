@@ -93,6 +93,24 @@ TEST(JobGraphTest, EachScenarioSetIsOnePairedEvaluationOfEveryModel) {
       Has(evaluation.args, {"--out", "/s/eval/study", "--overwrite", "--reuse", "/s/eval/study"}));
 }
 
+// Validation scenarios are one more paired evaluation of every model, on their own master seed.
+TEST(JobGraphTest, ValidationScenariosAreAThirdEvaluationOnTheirOwnSeed) {
+  const TemporaryFolder folder;
+  StudySpec spec = TinySpec(folder);
+  spec.evaluation.validation_episodes = 30;
+  spec.evaluation.validation_seed = 7;
+  const std::vector<EvaluationGroup> groups = EvaluationGroups(spec, "/s");
+  ASSERT_EQ(groups.size(), 3U);
+  EXPECT_EQ(groups[2].scenario_set, "validation");
+  EXPECT_EQ(groups[2].episodes, 30);
+  EXPECT_EQ(groups[2].seed, 7U);
+  EXPECT_EQ(groups[2].models, groups[0].models);
+  const std::vector<StudyJob> jobs = BuildJobGraph(spec, "/s");
+  const StudyJob& evaluation = Find(jobs, "eval/validation");
+  EXPECT_TRUE(Has(evaluation.args, {"--episodes", "30", "--seed", "7"}));
+  EXPECT_TRUE(Has(evaluation.args, {"--out", "/s/eval/validation"}));
+}
+
 // Each ensemble is a job after the runs it averages, and a model of the evaluations after them.
 TEST(JobGraphTest, EnsemblesAreBuiltFromTheirRunsAndEvaluatedWithThem) {
   const TemporaryFolder folder;

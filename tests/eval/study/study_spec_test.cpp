@@ -58,10 +58,28 @@ TEST(StudySpecTest, ReadsEverySection) {
   EXPECT_EQ(spec.evaluation.episodes, 20);
   EXPECT_EQ(spec.evaluation.seed, 4U);
   EXPECT_EQ(spec.evaluation.paper_episodes, 0);
+  EXPECT_EQ(spec.evaluation.validation_episodes, 0);  // none unless asked for
   EXPECT_EQ(spec.evaluation.compare_to, "baseline");
   EXPECT_EQ(spec.ppo_configs[0].compare_to, "");  // the study's
   EXPECT_EQ(spec.ppo_configs[1].compare_to, "shallow_locked");
   EXPECT_FALSE(spec.vae_figures);
+}
+
+// Validation scenarios: their own count and master seed, which must not be the test's.
+TEST(StudySpecTest, ReadsValidationScenariosApartFromTheTest) {
+  const TemporaryFolder folder;
+  std::string text = kStudy;
+  text.replace(text.find("paper_episodes: 0}"), 18,
+               "paper_episodes: 0, validation_episodes: 30, validation_seed: 7}");
+  const StudySpec spec = LoadStudySpec(WriteStudy(folder, text));
+  EXPECT_EQ(spec.evaluation.validation_episodes, 30);
+  EXPECT_EQ(spec.evaluation.validation_seed, 7U);
+  text.replace(text.find("validation_seed: 7"), 18, "validation_seed: 4");  // the test's seed
+  const std::filesystem::path same = WriteStudy(folder, text);
+  EXPECT_EQ(UserErrorMessage([&] { LoadStudySpec(same); }),
+            same.string() +
+                ": evaluation.validation_seed: equals evaluation.seed: the validation scenarios "
+                "would be the test's");
 }
 
 // Every study behind a claim (all but the quick start and the paper's table) loads, and measures
@@ -303,6 +321,10 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
       {"ppo: {configs: {a: {}}}\nevaluation: {episodes: nan}", "evaluation.episodes"},
       {"ppo: {configs: {a: {}}}\nevaluation: {reference_agents: [missing.pt]}",
        "evaluation.reference_agents[0]"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {validation_episodes: -1}",
+       "evaluation.validation_episodes"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {validation_episodes: 9, validation_seed: 1}",
+       "evaluation.validation_seed"},
       {"ppo: {configs: {a: {}}}\ncolour: red", "colour"},
       {"ppo: {configs: {'a/b': {}}}", "ppo.configs.a/b"},
       {"vaes: {s: {}}", "ppo"},
