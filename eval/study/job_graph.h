@@ -85,9 +85,9 @@ std::string SeedModelName(const std::string& config, int seed);
 
 /// The evaluation groups of a study: every PPO run and reference agent on the study's scenarios,
 /// the same on the paper's scenarios when paper_episodes > 0 and on the validation scenarios when
-/// validation_episodes > 0. Each policy runs under the
-/// observation settings it records or its sidecar gives (evaluate), so models trained under
-/// different settings are still compared paired.
+/// validation_episodes > 0. Each policy runs under the observation settings it records or its
+/// sidecar gives (evaluate), so models trained under different settings are still compared
+/// paired.
 std::vector<EvaluationGroup> EvaluationGroups(const StudySpec& spec,
                                               const std::filesystem::path& out);
 

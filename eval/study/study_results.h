@@ -1,7 +1,6 @@
 // The per-episode results of a study's evaluations, arranged for statistics: for each scenario
 // set ("study": the study's scenarios, "paper": the paper's 100, "validation": scenarios to choose
-// on) and each model, one row per
-// scenario in the same order for every model (paired).
+// on) and each model, one row per scenario in the same order for every model (paired).
 #pragma once
 
 #include <cstdint>
