@@ -16,9 +16,17 @@
 namespace colav {
 namespace {
 
+constexpr std::int64_t kGlobalStep = 1234;
+
+// Exports `model` to `path` (training step kGlobalStep, the default observation settings) and
+// loads the file back.
+torch::jit::Module ExportAndLoad(ActorCritic& model, const std::filesystem::path& path) {
+  ExportPolicy(*model, kGlobalStep, ObservationSettings{}, path);
+  return torch::jit::load(path.string());
+}
+
 void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) {
-  ExportPolicy(*model, 1234, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   torch::NoGradGuard no_grad;
   torch::Tensor obs = torch::rand({6, model->features_extractor()->observation_size()});
   obs.narrow(1, 0, kNavigationSize).mul_(200.0).sub_(100.0);  // big means: clipping matters
@@ -31,7 +39,7 @@ void ExpectExportMatches(ActorCritic& model, const std::filesystem::path& path) 
   EXPECT_TRUE(torch::allclose(loaded.get_method("value")({obs}).toTensor(), value, 1e-5, 1e-5));
   EXPECT_TRUE(torch::allclose(loaded.get_method("features")({obs}).toTensor(),
                               model->features_extractor()->forward(obs), 1e-5, 1e-6));
-  EXPECT_EQ(loaded.attr("global_step").toInt(), 1234);
+  EXPECT_EQ(loaded.attr("global_step").toInt(), kGlobalStep);
   EXPECT_EQ(loaded.attr("extractor").toStringRef(),
             ExtractorKindName(model->options().extractor.kind));
   EXPECT_EQ(loaded.attr("scans").toInt(), model->options().extractor.scans);
@@ -57,8 +65,7 @@ TEST(PolicyExportTest, APrivilegedCriticsPolicyActsAloneAndHasNoValue) {
   torch::NoGradGuard no_grad;
   model->action_net()->weight.normal_(0.0, 3.0);
   const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 7, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   const torch::Tensor obs = torch::rand({4, model->features_extractor()->observation_size()});
   const torch::Tensor critic_obs = torch::randn({4, model->options().critic_observation_size()});
   const torch::Tensor mean = model->forward(obs, critic_obs).first;
@@ -148,8 +155,7 @@ TEST(PolicyExportTest, ARecurrentPolicyStepsWithTheExpectedClippedAction) {
   options.deterministic_std_scale = {1.0, 0.0};
   ActorCritic model = ConstantMeanModel(options, {0.5f, -3.0f}, {1.0f, 1.0f});
   const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 1, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   const torch::Tensor state = loaded.get_method("initial_state")({2}).toTensor();
   const torch::Tensor obs = torch::rand({2, kObservationSize});
   const torch::Tensor action =
@@ -182,8 +188,7 @@ TEST(PolicyExportTest, ARecurrentPolicyStepsLikeTheInProcessModel) {
   model->recurrent()->bias_ih.normal_(0.0, 0.5);  // zero biases would hide a misplaced one
   model->recurrent()->bias_hh.normal_(0.0, 0.5);
   const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 1234, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   EXPECT_EQ(loaded.attr("recurrent_size").toInt(), 4);
   const std::int64_t batch = 5;
   torch::Tensor state = loaded.get_method("initial_state")({batch}).toTensor();
@@ -224,8 +229,7 @@ TEST(PolicyExportTest, ARecurrentPrivilegedCriticsPolicyStepsAloneAndHasNoStepVa
   torch::NoGradGuard no_grad;
   model->action_net()->weight.normal_(0.0, 3.0);
   const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 5, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   const std::int64_t batch = 3;
   torch::Tensor state = loaded.get_method("initial_state")({batch}).toTensor();
   torch::Tensor expected_state = torch::zeros({batch, 4});
@@ -257,8 +261,7 @@ TEST(PolicyExportTest, ASeparateCriticMemoryStepsInStepValue) {
   torch::NoGradGuard no_grad;
   model->critic_recurrent()->bias_ih.normal_(0.0, 0.5);  // the two cells must not agree
   const std::filesystem::path path = directory.path() / "policy.pt";
-  ExportPolicy(*model, 1234, ObservationSettings{}, path);
-  torch::jit::Module loaded = torch::jit::load(path.string());
+  torch::jit::Module loaded = ExportAndLoad(model, path);
   EXPECT_EQ(loaded.attr("recurrent_size").toInt(), 4);
   const std::int64_t batch = 3;
   torch::Tensor actor_state = loaded.get_method("initial_state")({batch}).toTensor();
@@ -361,8 +364,7 @@ TEST(PolicyExportTest, APolicyRejectsObservationsOfAnotherWidth) {
     options.extractor.scans = scans;
     ActorCritic model(options);
     const std::filesystem::path path = directory.path() / "policy.pt";
-    ExportPolicy(*model, 1, ObservationSettings{}, path);
-    torch::jit::Module loaded = torch::jit::load(path.string());
+    torch::jit::Module loaded = ExportAndLoad(model, path);
     const std::string expected_width = std::to_string(kNavigationSize + scans * kNumRays);
     const torch::Tensor obs = torch::rand({2, kNavigationSize + given_scans * kNumRays});
     for (const std::string method : {"forward", "value", "features"}) {
