@@ -373,6 +373,10 @@ std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
   return file;
 }
 
+// The largest master seed a study file may give: 2^53, the largest integer its numbers spell
+// exactly.
+constexpr std::int64_t kLargestSeed = 9'007'199'254'740'992;
+
 EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   EvaluationSpec evaluation;
   if (!node) return evaluation;
@@ -385,7 +389,7 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   }
   if (node["seed"]) {
     evaluation.seed = static_cast<std::uint64_t>(
-        reader.Integer(node["seed"], "evaluation.seed", 0, 9'007'199'254'740'992));
+        reader.Integer(node["seed"], "evaluation.seed", 0, kLargestSeed));
   }
   if (node["paper_episodes"]) {
     evaluation.paper_episodes = static_cast<int>(
@@ -396,8 +400,8 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
         reader.Integer(node["validation_episodes"], "evaluation.validation_episodes", 0, 100000));
   }
   if (node["validation_seed"]) {
-    evaluation.validation_seed = static_cast<std::uint64_t>(reader.Integer(
-        node["validation_seed"], "evaluation.validation_seed", 0, 9'007'199'254'740'992));
+    evaluation.validation_seed = static_cast<std::uint64_t>(
+        reader.Integer(node["validation_seed"], "evaluation.validation_seed", 0, kLargestSeed));
   }
   if (evaluation.validation_episodes > 0 && evaluation.validation_seed == evaluation.seed) {
     reader.Fail("evaluation.validation_seed",

@@ -68,13 +68,16 @@ TEST(StudySpecTest, ReadsEverySection) {
 // Validation scenarios: their own count and master seed, which must not be the test's.
 TEST(StudySpecTest, ReadsValidationScenariosApartFromTheTest) {
   const TemporaryFolder folder;
+  const std::string evaluation = "paper_episodes: 0}";
   std::string text = kStudy;
-  text.replace(text.find("paper_episodes: 0}"), 18,
+  text.replace(text.find(evaluation), evaluation.size(),
                "paper_episodes: 0, validation_episodes: 30, validation_seed: 7}");
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, text));
   EXPECT_EQ(spec.evaluation.validation_episodes, 30);
   EXPECT_EQ(spec.evaluation.validation_seed, 7U);
-  text.replace(text.find("validation_seed: 7"), 18, "validation_seed: 4");  // the test's seed
+  const std::string validation_seed = "validation_seed: 7";
+  text.replace(text.find(validation_seed), validation_seed.size(),
+               "validation_seed: 4");  // the test's seed
   const std::filesystem::path same = WriteStudy(folder, text);
   EXPECT_EQ(UserErrorMessage([&] { LoadStudySpec(same); }),
             same.string() +
