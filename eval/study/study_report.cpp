@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <initializer_list>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "eval/study/goal_shortfall.h"
 #include "eval/study/job_graph.h"
 #include "eval/study/run_diagnostics.h"
 #include "eval/study/study_figures.h"
@@ -472,6 +474,110 @@ void FineTuneSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
+// The summary of `model` among the report's.
+const ModelSummary& SummaryOf(const ScenarioSetReport& report, const std::string& model) {
+  return *std::find_if(report.models.begin(), report.models.end(),
+                       [&](const ModelSummary& summary) { return summary.name == model; });
+}
+
+// The metrics the goal bounds, in the report's order.
+std::vector<StudyMetric> GoalMetrics(const StudySpec& spec) {
+  std::vector<StudyMetric> bounded;
+  for (const StudyMetric& metric : StudyMetrics()) {
+    if (spec.evaluation.goal.count(metric.name) > 0) bounded.push_back(metric);
+  }
+  return bounded;
+}
+
+// "progress % at least 97, cte m at most 17, collisions % at most 3"
+std::string DescribeGoal(const StudySpec& spec) {
+  std::vector<std::string> bounds;
+  for (const StudyMetric& metric : GoalMetrics(spec)) {
+    bounds.push_back(fmt::format("{} {} {}", metric.label,
+                                 metric.higher_is_better ? "at least" : "at most",
+                                 spec.evaluation.goal.at(metric.name)));
+  }
+  return fmt::format("{}", fmt::join(bounds, ", "));
+}
+
+// The heading of a goal table: the `leads` columns, the networks, each bound's metric, the sum.
+void GoalHeading(std::ostringstream& md, const StudySpec& spec,
+                 const std::vector<std::string>& leads) {
+  md << "| " << fmt::format("{}", fmt::join(leads, " | ")) << " | networks |";
+  for (const StudyMetric& metric : GoalMetrics(spec)) md << ' ' << metric.label << " |";
+  md << " shortfall |\n|";
+  for (std::size_t i = 0; i < leads.size() + spec.evaluation.goal.size() + 2; ++i) md << "---|";
+  md << '\n';
+}
+
+// One model's row: its mean per bound, with how far it falls short of the bound where it does
+// (short of an at-least bound, over an at-most one), and the sum.
+void GoalRow(std::ostringstream& md, const StudySpec& spec, const std::string& lead,
+             const GoalShortfall& shortfall, const ModelSummary& summary) {
+  md << "| " << lead << " | " << shortfall.networks << " |";
+  for (const StudyMetric& metric : GoalMetrics(spec)) {
+    const double mean = summary.metrics.at(metric.name).mean;
+    const double short_by = shortfall.by_metric.at(metric.name);
+    md << (short_by > 0.0 ? fmt::format(" {:.2f} ({:.2f} {}) |", mean, short_by,
+                                        metric.higher_is_better ? "short" : "over")
+                          : fmt::format(" {:.2f} |", mean));
+  }
+  md << (shortfall.met() ? std::string(" **0** |") : fmt::format(" {:.2f} |", shortfall.total))
+     << '\n';
+}
+
+nlohmann::json ToJson(const GoalShortfall& shortfall) {
+  return {{"model", shortfall.model},
+          {"networks", shortfall.networks},
+          {"metrics", shortfall.by_metric},
+          {"total", shortfall.total}};
+}
+
+// Every model of the study against the goal, on one scenario set.
+void GoalTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
+               const ScenarioSetReport& report) {
+  md << "\nAgainst the goal (" << DescribeGoal(spec)
+     << "): each model's means, how far each falls short of its bound, and the sum of those (the "
+        "shortfall, in the report's units; 0: every bound met).\n\n";
+  GoalHeading(md, spec, {"model"});
+  json["goal_shortfall"] = nlohmann::json::array();
+  for (const GoalShortfall& shortfall : MeasureGoalShortfalls(spec, report)) {
+    GoalRow(md, spec, shortfall.model, shortfall, SummaryOf(report, shortfall.model));
+    json["goal_shortfall"].push_back(ToJson(shortfall));
+  }
+}
+
+// The model the validation scenarios choose by the goal, and its figures on the test's.
+void ChosenOnValidation(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
+                        const std::map<std::string, ScenarioSetReport>& reports) {
+  if (spec.evaluation.goal.empty() || reports.count("validation") == 0) return;
+  const ScenarioSetReport& validation = reports.at("validation");
+  const ScenarioSetReport& test = reports.at("study");
+  const std::vector<GoalShortfall> on_validation = MeasureGoalShortfalls(spec, validation);
+  const GoalShortfall& chosen = ChooseByShortfall(on_validation);
+  const std::vector<GoalShortfall> on_test = MeasureGoalShortfalls(spec, test);
+  const GoalShortfall& chosen_on_test =
+      *std::find_if(on_test.begin(), on_test.end(),
+                    [&](const GoalShortfall& s) { return s.model == chosen.model; });
+  md << "\n## Chosen on the validation scenarios\n\nThe goal: " << DescribeGoal(spec)
+     << ". Of the study's models, the one whose means on the validation scenarios fall least "
+        "short of it (the sum of each mean's shortfall from its bound, in the report's units; ties "
+        "to fewer networks, then to the first in the study file). Only its figures on the test "
+        "scenarios are a claim.\n\n";
+  GoalHeading(md, spec, {"scenarios", "model"});
+  GoalRow(md, spec, "validation | " + chosen.model, chosen, SummaryOf(validation, chosen.model));
+  GoalRow(md, spec, "test | " + chosen.model, chosen_on_test, SummaryOf(test, chosen.model));
+  md << "\n**" << chosen.model
+     << (chosen_on_test.met() ? std::string(" meets the goal on the test scenarios.**\n")
+                              : fmt::format(" misses the goal on the test scenarios by {:.2f}.**\n",
+                                            chosen_on_test.total));
+  json["chosen_on_validation"] = {{"model", chosen.model},
+                                  {"networks", chosen.networks},
+                                  {"validation_shortfall", chosen.total},
+                                  {"test_shortfall", chosen_on_test.total},
+                                  {"meets_goal_on_test", chosen_on_test.met()}};
+}
+
 // The heading of a scenario set's section.
 std::string ScenarioSetTitle(const std::string& set) {
   if (set == "paper") return "The paper's test";
@@ -568,14 +674,20 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
   EnsembleSection(md, json, spec);
   StudentSection(md, json, spec, out);
   FineTuneSection(md, json, spec);
+  std::map<std::string, ScenarioSetReport> reports;
   for (const auto& [set, results] : sets) {
-    const ScenarioSetReport report =
-        SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
+    reports[set] = SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
+  }
+  if (!spec.evaluation.goal.empty()) json["goal"] = spec.evaluation.goal;
+  ChosenOnValidation(md, json, spec, reports);
+  for (const auto& [set, results] : sets) {
+    const ScenarioSetReport& report = reports.at(set);
     json["scenario_sets"][set] = ToJson(report);
     json["scenario_sets"][set]["seed"] = results.seed;
     md << "\n## " << ScenarioSetTitle(set) << ": " << report.episodes << " scenarios (master seed "
        << results.seed << ")\n\n";
     ModelTable(md, report);
+    if (!spec.evaluation.goal.empty()) GoalTable(md, json["scenario_sets"][set], spec, report);
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
     EnsembleGainTable(md, report);

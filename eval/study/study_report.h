@@ -2,8 +2,9 @@
 // configurations, over scenarios for single agents), the probability that one configuration beats
 // another on a random scenario and seed, where each model's progress and cross-track error go
 // (outcome_breakdown.h), where each single agent falls among a configuration's seeds
-// (agent_among_seeds.h), and the paper's table beside ours. Written as
-// OUT/REPORT.md and OUT/summary.json (every figure of the report, machine-readable).
+// (agent_among_seeds.h), how far each model falls short of the study's goal and which model the
+// validation scenarios choose by it (goal_shortfall.h), and the paper's table beside ours.
+// Written as OUT/REPORT.md and OUT/summary.json (every figure of the report, machine-readable).
 #pragma once
 
 #include <filesystem>

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <regex>
 #include <set>
 
+#include "eval/study/study_metrics.h"
 #include "src/error.h"
 #include "src/yaml_file.h"
 
@@ -377,12 +379,40 @@ std::filesystem::path ExistingFile(const Reader& reader, const YAML::Node& node,
 // exactly.
 constexpr std::int64_t kLargestSeed = 9'007'199'254'740'992;
 
+// evaluation.goal: metric name -> bound, each a metric of the report, a rate's or the progress's
+// bound within [0, 100] %.
+std::map<std::string, double> ReadGoal(const Reader& reader, const YAML::Node& node) {
+  std::map<std::string, double> goal;
+  if (!node) return goal;
+  if (!node.IsMap() || node.size() == 0) {
+    reader.Fail("evaluation.goal",
+                "expects a mapping of metrics to bounds, e.g. {progress: 97, collision: 3}");
+  }
+  for (const auto& item : node) {
+    const std::string name = item.first.as<std::string>();
+    const std::string key = "evaluation.goal." + name;
+    const StudyMetric* metric = FindStudyMetric(name);
+    if (!metric) {
+      std::vector<std::string> names;
+      for (const StudyMetric& m : StudyMetrics()) names.push_back(m.name);
+      reader.Fail(key, fmt::format("not a metric of the report ({})", fmt::join(names, ", ")));
+    }
+    const double infinity = std::numeric_limits<double>::infinity();
+    const double bound = reader.Number(item.second, key, -infinity, infinity);
+    if (metric->bounded() && (bound < 0.0 || bound > metric->scale)) {
+      reader.Fail(key, fmt::format("expects a bound in [0, {}] %, got {}", metric->scale, bound));
+    }
+    goal[name] = bound;
+  }
+  return goal;
+}
+
 EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
   EvaluationSpec evaluation;
   if (!node) return evaluation;
   reader.RequireMap(node, "evaluation",
                     {"episodes", "seed", "paper_episodes", "validation_episodes", "validation_seed",
-                     "reference_agents", "paper_results", "compare_to"});
+                     "goal", "reference_agents", "paper_results", "compare_to"});
   if (node["episodes"]) {
     evaluation.episodes =
         static_cast<int>(reader.Integer(node["episodes"], "evaluation.episodes", 1, 100000));
@@ -407,6 +437,7 @@ EvaluationSpec ReadEvaluation(const Reader& reader, const YAML::Node& node) {
     reader.Fail("evaluation.validation_seed",
                 "equals evaluation.seed: the validation scenarios would be the test's");
   }
+  evaluation.goal = ReadGoal(reader, node["goal"]);
   if (node["paper_results"]) {
     evaluation.paper_results =
         ExistingFile(reader, node["paper_results"], "evaluation.paper_results");

@@ -27,6 +27,9 @@
 //     validation_episodes: 1000                     # scenarios to choose on, apart from the
 //     validation_seed: 2                            # test's (another master seed); 0 episodes:
 //                                                   # none (the default)
+//     goal: {progress: 97, cross_track_error: 17, collision: 3}  # bounds the report measures
+//                                                   # each model against; with validation
+//                                                   # scenarios, the model they choose
 //     reference_agents: [../shared/reference-agents/shallow_locked_3m.pt]
 //     paper_results: paper_results.yaml              # the paper's table, printed beside ours
 //     compare_to: baseline                          # the configuration the others are compared
@@ -143,6 +146,11 @@ struct EvaluationSpec {
   /// eval/validation/); 0 = none. Their master seed must differ from `seed`.
   int validation_episodes = 0;
   std::uint64_t validation_seed = 2;
+  /// A bound per metric (StudyMetrics' names, the report's units): at least it where higher is
+  /// better, at most it otherwise. The report measures how far each model's means fall short of
+  /// them, and with validation scenarios names the model those choose (goal_shortfall.h).
+  /// Empty = none.
+  std::map<std::string, double> goal;
   std::vector<std::filesystem::path> reference_agents;
   std::filesystem::path paper_results;  ///< the paper's table (YAML); empty = none
   /// The configuration every other one is compared with (probability of improvement), unless

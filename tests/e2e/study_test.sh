@@ -26,7 +26,8 @@ ppo:
     baseline: {extractor: baseline}
 ensembles:
   pair: {members: [shallow_locked, baseline]}
-evaluation: {episodes: 6, seed: 3, paper_episodes: 4, validation_episodes: 3, validation_seed: 5}
+evaluation: {episodes: 6, seed: 3, paper_episodes: 4, validation_episodes: 3, validation_seed: 5,
+             goal: {progress: 60, cross_track_error: 40, collision: 20}}
 YAML
 
 # A bad key of a program is refused before any job runs, naming the job and the key.
@@ -71,6 +72,8 @@ done
 grep -q "(figures/study_trade_off.png)" "$WORK/run/REPORT.md" || fail "trade-off figure not in the report"
 grep -q "^## Validation, to choose on (not the test): 3 scenarios (master seed 5)$" \
   "$WORK/run/REPORT.md" || fail "no validation section in the report"
+grep -q "^## Chosen on the validation scenarios$" "$WORK/run/REPORT.md" ||
+  fail "no model chosen on the validation scenarios in the report"
 grep -q "| model | over | progress | cte | collisions | return |" "$WORK/run/REPORT.md" ||
   fail "no return in the report's probability of improvement"
 grep -q "| PPO runs of | wall-clock s | std at the end |" "$WORK/run/REPORT.md" ||
@@ -132,6 +135,25 @@ paths = {name: [r["path_length"] for r in csv.DictReader(open(
     f"{os.path.dirname(sys.argv[1])}/eval/{name}/episodes.csv")) if r["model"] == "baseline.seed_0"]
     for name in ("study", "validation")}
 assert paths["study"][:3] != paths["validation"], paths
+# The goal: each model's shortfall from its means, and the model the validation scenarios choose
+# (the smallest; ties to fewer networks, then to file order), with its shortfall on the test.
+goal = {"progress": (60, 1), "cross_track_error": (40, -1), "collision": (20, -1)}
+def shortfall(sset, model):
+    means = {m["name"]: m["metrics"] for m in sset["models"]}[model]
+    return sum(max(0.0, sign * (bound - means[k]["mean"])) for k, (bound, sign) in goal.items())
+networks = {"shallow_locked": 1, "baseline": 1, "pair": 2}
+for name in ("study", "validation"):
+    sset = s["scenario_sets"][name]
+    for row in sset["goal_shortfall"]:
+        assert abs(row["total"] - shortfall(sset, row["model"])) < 1e-9, row
+        assert row["networks"] == networks[row["model"]], row
+validation = s["scenario_sets"]["validation"]
+order = ["shallow_locked", "baseline", "pair"]
+expected = min(order, key=lambda m: (round(shortfall(validation, m), 9), networks[m], order.index(m)))
+chosen = s["chosen_on_validation"]
+assert chosen["model"] == expected, (chosen, expected)
+assert abs(chosen["test_shortfall"] - shortfall(s["scenario_sets"]["study"], expected)) < 1e-9
+assert chosen["meets_goal_on_test"] == (chosen["test_shortfall"] == 0), chosen
 assert s["config_steps"] == {"shallow_locked": 3072, "baseline": 2048}, s["config_steps"]
 assert s["ensembles"] == {"pair": {"members": ["shallow_locked", "baseline"], "count": 2}}
 # How each run ended: its seeds' wall-clock, final std and late training episodes.

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 
 #include "tests/src/test_util.h"
 
@@ -39,6 +40,14 @@ ppo:
 evaluation: {episodes: 20, seed: 4, paper_episodes: 0}
 )";
 
+// kStudy with `keys` ("key: value, ...") added to its evaluation.
+std::string WithEvaluationKeys(const std::string& keys) {
+  const std::string evaluation = "paper_episodes: 0}";
+  std::string text = kStudy;
+  text.replace(text.find(evaluation), evaluation.size(), "paper_episodes: 0, " + keys + "}");
+  return text;
+}
+
 TEST(StudySpecTest, ReadsEverySection) {
   const TemporaryFolder folder;
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, kStudy));
@@ -68,10 +77,7 @@ TEST(StudySpecTest, ReadsEverySection) {
 // Validation scenarios: their own count and master seed, which must not be the test's.
 TEST(StudySpecTest, ReadsValidationScenariosApartFromTheTest) {
   const TemporaryFolder folder;
-  const std::string evaluation = "paper_episodes: 0}";
-  std::string text = kStudy;
-  text.replace(text.find(evaluation), evaluation.size(),
-               "paper_episodes: 0, validation_episodes: 30, validation_seed: 7}");
+  std::string text = WithEvaluationKeys("validation_episodes: 30, validation_seed: 7");
   const StudySpec spec = LoadStudySpec(WriteStudy(folder, text));
   EXPECT_EQ(spec.evaluation.validation_episodes, 30);
   EXPECT_EQ(spec.evaluation.validation_seed, 7U);
@@ -83,6 +89,17 @@ TEST(StudySpecTest, ReadsValidationScenariosApartFromTheTest) {
             same.string() +
                 ": evaluation.validation_seed: equals evaluation.seed: the validation scenarios "
                 "would be the test's");
+}
+
+// A goal bounds metrics of the report, each in its own units; the report measures it.
+TEST(StudySpecTest, ReadsTheGoalAsBoundsOnTheReportsMetrics) {
+  const TemporaryFolder folder;
+  const StudySpec spec = LoadStudySpec(WriteStudy(
+      folder, WithEvaluationKeys("goal: {progress: 97, cross_track_error: 17.5, collision: 0}")));
+  const std::map<std::string, double> goal = {
+      {"progress", 97.0}, {"cross_track_error", 17.5}, {"collision", 0.0}};
+  EXPECT_EQ(spec.evaluation.goal, goal);
+  EXPECT_TRUE(LoadStudySpec(WriteStudy(folder, kStudy)).evaluation.goal.empty());  // none
 }
 
 // Every study behind a claim (all but the quick start and the paper's table) loads, and measures
@@ -328,6 +345,11 @@ TEST(StudySpecTest, BadInputNamesTheFileAndKey) {
        "evaluation.validation_episodes"},
       {"ppo: {configs: {a: {}}}\nevaluation: {validation_episodes: 9, validation_seed: 1}",
        "evaluation.validation_seed"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {goal: {speed: 3}}", "evaluation.goal.speed"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {goal: {collision: 101}}",
+       "evaluation.goal.collision"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {goal: {return: high}}", "evaluation.goal.return"},
+      {"ppo: {configs: {a: {}}}\nevaluation: {goal: 3}", "evaluation.goal"},
       {"ppo: {configs: {a: {}}}\ncolour: red", "colour"},
       {"ppo: {configs: {'a/b': {}}}", "ppo.configs.a/b"},
       {"vaes: {s: {}}", "ppo"},
