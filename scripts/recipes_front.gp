@@ -1,6 +1,6 @@
 # Draws docs/recipes_front.png from docs/recipes_front.csv: every recipe measured (mean over 5
-# training seeds, 95 % intervals), nineteen ensembles of our runs, the rescued helmsmen distilled
-# into one network, and the authors' agents, collisions against progress and against
+# training seeds, 95 % intervals), nineteen ensembles of our runs, two of them distilled into one
+# network each, and the authors' agents, collisions against progress and against
 # cross-track error, with the issue's goal (collisions <= 3 %, progress >= 97 %, cross-track
 # error <= 17 m) shaded. Run from the repository's root: gnuplot scripts/recipes_front.gp
 set terminal pngcairo size 1500,700 enhanced font 'DejaVu Sans,11'
@@ -16,7 +16,7 @@ not_in_group(name) = (strcol(2) eq name) ? NaN : 1
 groups = "3M 10M 15M authors ensembles distilled"
 title_of(i) = i == 1 ? '3,000,000 steps' : i == 2 ? '10,000,000 steps' : \
               i == 3 ? '15,000,000-25,000,000 steps' : i == 4 ? "the authors' agents" : \
-              i == 5 ? 'ensembles of our runs' : 'one network distilled from the rescued helmsmen'
+              i == 5 ? 'ensembles of our runs' : 'one network distilled from three'
 points = "5 9 7 3 11 13"
 set key below horizontal box
 set grid
