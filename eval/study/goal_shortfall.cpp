@@ -22,12 +22,10 @@ std::vector<GoalShortfall> MeasureGoalShortfalls(const StudySpec& spec,
                                                  const ScenarioSetReport& report) {
   std::vector<GoalShortfall> shortfalls;
   for (const SeededModel& seeded : spec.SeededModels()) {
-    const auto summary =
-        std::find_if(report.models.begin(), report.models.end(),
-                     [&](const ModelSummary& model) { return model.name == seeded.name; });
+    const ModelSummary& summary = SummaryOf(report, seeded.name);
     GoalShortfall shortfall{seeded.name, NetworksOf(spec, seeded.name), {}, 0.0};
     for (const auto& [name, bound] : spec.evaluation.goal) {
-      const double mean = summary->metrics.at(name).mean;
+      const double mean = summary.metrics.at(name).mean;
       const double short_by = FindStudyMetric(name)->higher_is_better ? bound - mean : mean - bound;
       shortfall.by_metric[name] = std::max(0.0, short_by);
       shortfall.total += shortfall.by_metric[name];

@@ -19,16 +19,6 @@ namespace {
 const char* const kFigureMetrics[] = {"progress", "cross_track_error", "duration", "collision"};
 constexpr double kDefaultBeta = 1.0;  // train_vae's vae.beta
 
-const StudyMetric& Metric(const std::string& name) {
-  return *std::find_if(StudyMetrics().begin(), StudyMetrics().end(),
-                       [&](const StudyMetric& m) { return m.name == name; });
-}
-
-const ModelSummary& Summary(const ScenarioSetReport& report, const std::string& name) {
-  return *std::find_if(report.models.begin(), report.models.end(),
-                       [&](const ModelSummary& m) { return m.name == name; });
-}
-
 // The study's model of several seeds named `name` (study_spec.h), if there is one.
 std::optional<SeededModel> FindSeeded(const StudySpec& spec, const std::string& name) {
   for (const SeededModel& model : spec.SeededModels()) {
@@ -41,7 +31,7 @@ std::optional<SeededModel> FindSeeded(const StudySpec& spec, const std::string& 
 // report's unit).
 std::vector<double> SeedMeans(const ScenarioSetReport& report, const ScenarioSetResults& results,
                               const std::string& name, const std::string& metric) {
-  const int seeds = Summary(report, name).seeds;
+  const int seeds = SummaryOf(report, name).seeds;
   std::vector<double> means;
   means.reserve(static_cast<std::size_t>(seeds));
   for (int k = 0; k < seeds; ++k) {
@@ -54,7 +44,7 @@ std::string Estimates(const ScenarioSetReport& report, const std::vector<std::st
                       const std::string& metric, const std::map<std::string, double>& position) {
   std::ostringstream block;
   for (const std::string& name : names) {
-    const MetricEstimate& e = Summary(report, name).metrics.at(metric);
+    const MetricEstimate& e = SummaryOf(report, name).metrics.at(metric);
     block << position.at(name) << ' ' << e.mean << ' ' << e.ci.low << ' ' << e.ci.high << '\n';
   }
   return block.str();
@@ -80,7 +70,7 @@ std::string TradeOffRows(const ScenarioSetReport& report, const std::vector<std:
                          const std::string& metric) {
   std::ostringstream rows;
   for (const std::string& name : names) {
-    const ModelSummary& model = Summary(report, name);
+    const ModelSummary& model = SummaryOf(report, name);
     const MetricEstimate& x = model.metrics.at("collision");
     const MetricEstimate& y = model.metrics.at(metric);
     rows << x.mean << ' ' << y.mean << ' ' << x.ci.low << ' ' << x.ci.high << ' ' << y.ci.low << ' '
@@ -118,7 +108,7 @@ void DrawModelsFigure(const StudySpec& spec, const ScenarioSetResults& results,
     script << DataBlock(std::string("ours_") + metric, Estimates(report, ours, metric, row))
            << DataBlock(std::string("refs_") + metric, Estimates(report, references, metric, row))
            << DataBlock(std::string("seeds_") + metric, seeds.str()) << "set title "
-           << GnuplotQuote(Metric(metric).label) << "\n"
+           << GnuplotQuote(FindStudyMetric(metric)->label) << "\n"
            << "plot $seeds_" << metric << " using 1:2 with points pt 6 ps 0.7 "
            << LineColour("#999999") << " title 'training seeds', $ours_" << metric
            << " using 2:1:3:4 with xerrorbars pt 7 ps 1.2 lw 2 " << LineColour(FigureColour(0))
@@ -148,7 +138,7 @@ void DrawTradeOffFigure(const StudySpec& spec, const ScenarioSetReport& report,
   script << MultiplotLayout(1, 2, GnuplotEnhancedText(title)) << LightGrid()
          << "set key below horizontal\nset offsets graph 0.05, graph 0.25, graph 0.05, graph "
             "0.05\nset xlabel "
-         << GnuplotQuote(Metric("collision").label) << "\n";
+         << GnuplotQuote(FindStudyMetric("collision")->label) << "\n";
   for (const char* metric : {"progress", "cross_track_error"}) {
     std::string points;
     std::string labels;
@@ -162,8 +152,8 @@ void DrawTradeOffFigure(const StudySpec& spec, const ScenarioSetReport& report,
       labels += fmt::format(
           ", ${} using 1:2:7 with labels offset 0.6,0.6 left noenhanced font ',9' notitle", block);
     }
-    script << "set ylabel " << GnuplotQuote(Metric(metric).label) << "\nplot " << points << labels
-           << "\n";
+    script << "set ylabel " << GnuplotQuote(FindStudyMetric(metric)->label) << "\nplot " << points
+           << labels << "\n";
   }
   script << "unset multiplot\n";
   RenderGnuplotPng(script.str(), png, 1200, 560);
@@ -207,7 +197,7 @@ void DrawBetaSweepFigure(const ScenarioSetResults& results, const ScenarioSetRep
     std::ostringstream estimates;
     std::ostringstream seeds;
     for (const auto& [beta, config] : sweep) {
-      const MetricEstimate& e = Summary(report, config).metrics.at(metric);
+      const MetricEstimate& e = SummaryOf(report, config).metrics.at(metric);
       estimates << beta << ' ' << e.mean << ' ' << e.ci.low << ' ' << e.ci.high << '\n';
       for (const double mean : SeedMeans(report, results, config, metric)) {
         seeds << beta << ' ' << mean << '\n';
@@ -215,7 +205,7 @@ void DrawBetaSweepFigure(const ScenarioSetResults& results, const ScenarioSetRep
     }
     script << DataBlock(std::string("sweep_") + metric, estimates.str())
            << DataBlock(std::string("seeds_") + metric, seeds.str()) << "set title "
-           << GnuplotQuote(Metric(metric).label) << "\nplot $seeds_" << metric
+           << GnuplotQuote(FindStudyMetric(metric)->label) << "\nplot $seeds_" << metric
            << " using 1:2 with points pt 6 ps 0.7 " << LineColour("#999999")
            << " title 'training seeds', $sweep_" << metric
            << " using 1:2:3:4 with yerrorlines pt 7 lw 2 " << LineColour(FigureColour(0))

@@ -474,12 +474,6 @@ void FineTuneSection(std::ostringstream& md, nlohmann::json& json, const StudySp
   }
 }
 
-// The summary of `model` among the report's.
-const ModelSummary& SummaryOf(const ScenarioSetReport& report, const std::string& model) {
-  return *std::find_if(report.models.begin(), report.models.end(),
-                       [&](const ModelSummary& summary) { return summary.name == model; });
-}
-
 // The metrics the goal bounds, in the report's order.
 std::vector<StudyMetric> GoalMetrics(const StudySpec& spec) {
   std::vector<StudyMetric> bounded;
@@ -586,6 +580,11 @@ std::string ScenarioSetTitle(const std::string& set) {
 }
 
 }  // namespace
+
+const ModelSummary& SummaryOf(const ScenarioSetReport& report, const std::string& model) {
+  return *std::find_if(report.models.begin(), report.models.end(),
+                       [&](const ModelSummary& summary) { return summary.name == model; });
+}
 
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble) {
   std::string stall;

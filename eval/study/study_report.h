@@ -58,6 +58,9 @@ struct ScenarioSetReport {
 ScenarioSetReport SummariseScenarioSet(const StudySpec& spec, const ScenarioSetResults& results,
                                        const std::string& reference_config);
 
+/// The summary of `model`, which `report` must hold.
+const ModelSummary& SummaryOf(const ScenarioSetReport& report, const std::string& model);
+
 /// How an ensemble kind's members share the helm, as the report says it after their list ("" when
 /// they act with the mean of their actions).
 std::string DescribeEnsembleRule(const EnsembleSpec& ensemble);
