@@ -529,27 +529,28 @@ nlohmann::json ToJson(const GoalShortfall& shortfall) {
 
 // Every model of the study against the goal, on one scenario set.
 void GoalTable(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
-               const ScenarioSetReport& report) {
+               const ScenarioSetReport& report, const std::vector<GoalShortfall>& shortfalls) {
   md << "\nAgainst the goal (" << DescribeGoal(spec)
      << "): each model's means, how far each falls short of its bound, and the sum of those (the "
         "shortfall, in the report's units; 0: every bound met).\n\n";
   GoalHeading(md, spec, {"model"});
   json["goal_shortfall"] = nlohmann::json::array();
-  for (const GoalShortfall& shortfall : MeasureGoalShortfalls(spec, report)) {
+  for (const GoalShortfall& shortfall : shortfalls) {
     GoalRow(md, spec, shortfall.model, shortfall, SummaryOf(report, shortfall.model));
     json["goal_shortfall"].push_back(ToJson(shortfall));
   }
 }
 
-// The model the validation scenarios choose by the goal, and its figures on the test's.
+// The model the validation scenarios choose by the goal, and its figures on the test's;
+// `shortfalls` by scenario set (none without a goal).
 void ChosenOnValidation(std::ostringstream& md, nlohmann::json& json, const StudySpec& spec,
-                        const std::map<std::string, ScenarioSetReport>& reports) {
-  if (spec.evaluation.goal.empty() || reports.count("validation") == 0) return;
+                        const std::map<std::string, ScenarioSetReport>& reports,
+                        const std::map<std::string, std::vector<GoalShortfall>>& shortfalls) {
+  if (shortfalls.count("validation") == 0) return;
   const ScenarioSetReport& validation = reports.at("validation");
   const ScenarioSetReport& test = reports.at("study");
-  const std::vector<GoalShortfall> on_validation = MeasureGoalShortfalls(spec, validation);
-  const GoalShortfall& chosen = ChooseByShortfall(on_validation);
-  const std::vector<GoalShortfall> on_test = MeasureGoalShortfalls(spec, test);
+  const GoalShortfall& chosen = ChooseByShortfall(shortfalls.at("validation"));
+  const std::vector<GoalShortfall>& on_test = shortfalls.at("study");
   const GoalShortfall& chosen_on_test =
       *std::find_if(on_test.begin(), on_test.end(),
                     [&](const GoalShortfall& s) { return s.model == chosen.model; });
@@ -674,11 +675,15 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
   StudentSection(md, json, spec, out);
   FineTuneSection(md, json, spec);
   std::map<std::string, ScenarioSetReport> reports;
+  std::map<std::string, std::vector<GoalShortfall>> shortfalls;  // none without a goal
   for (const auto& [set, results] : sets) {
     reports[set] = SummariseScenarioSet(spec, results, spec.evaluation.compare_to);
+    if (!spec.evaluation.goal.empty()) {
+      shortfalls[set] = MeasureGoalShortfalls(spec, reports.at(set));
+    }
   }
   if (!spec.evaluation.goal.empty()) json["goal"] = spec.evaluation.goal;
-  ChosenOnValidation(md, json, spec, reports);
+  ChosenOnValidation(md, json, spec, reports, shortfalls);
   for (const auto& [set, results] : sets) {
     const ScenarioSetReport& report = reports.at(set);
     json["scenario_sets"][set] = ToJson(report);
@@ -686,7 +691,9 @@ void WriteStudyReport(const StudySpec& spec, const std::filesystem::path& out, d
     md << "\n## " << ScenarioSetTitle(set) << ": " << report.episodes << " scenarios (master seed "
        << results.seed << ")\n\n";
     ModelTable(md, report);
-    if (!spec.evaluation.goal.empty()) GoalTable(md, json["scenario_sets"][set], spec, report);
+    if (!shortfalls.empty()) {
+      GoalTable(md, json["scenario_sets"][set], spec, report, shortfalls.at(set));
+    }
     Figures(md, spec, out, set, results, report);
     ImprovementTable(md, report);
     EnsembleGainTable(md, report);
