@@ -1,5 +1,5 @@
 # Draws docs/recipes_front.png from docs/recipes_front.csv: every recipe measured (mean over 5
-# training seeds, 95 % intervals), nineteen ensembles of our runs, two of them distilled into one
+# training seeds, 95 % intervals), twenty-two ensembles of our runs, two of them distilled into one
 # network each, and the authors' agents, collisions against progress and against
 # cross-track error, with the issue's goal (collisions <= 3 %, progress >= 97 %, cross-track
 # error <= 17 m) shaded. Run from the repository's root: gnuplot scripts/recipes_front.gp
@@ -23,7 +23,7 @@ set grid
 set xlabel 'collisions % (lower is better)'
 set xrange [0:12]
 set style fill transparent solid 0.35 noborder
-set multiplot layout 1,2 title "Every recipe on the same 1,000 scenarios. Inside the goal (shaded) on all three at once: the rescued helmsmen,\nand the privileged critic at lambda 0.91 or among vessels at 175 m, relieved or rescued (none chosen on validation scenarios)"
+set multiplot layout 1,2 title "Every recipe on the same 1,000 scenarios. Inside the goal (shaded) on all three at once: the rescued helmsmen, the privileged critic near\nwithin 30 m (chosen on validation scenarios) or 40 m, the memory elsewhere, rescued, and the critic at lambda 0.91 or among vessels at 175 m (not chosen)"
 set ylabel 'progress % (higher is better)'
 set yrange [90:98]
 set object 1 rect from graph 0, first 97 to first 3, graph 1 fc rgb '#b8e0b8' behind
