@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/eval/test_policies.h"
+#include "tests/src/project_paths.h"
 #include "tests/src/test_util.h"
 
 namespace colav {
@@ -25,7 +26,8 @@ struct CommandResult {
 CommandResult RunEvaluate(const std::string& arguments, const TemporaryFolder& folder) {
   const char* bin_dir = std::getenv("COLAV_BIN_DIR");
   const std::string program =
-      std::string(bin_dir != nullptr ? bin_dir : COLAV_BINARY_DIR "/bin") + "/evaluate";
+      (bin_dir != nullptr ? std::string(bin_dir) : std::string(testing_util::kBinaryDir) + "/bin") +
+      "/evaluate";
   const std::string command = program + " " + arguments + " > " + (folder / "out.txt").string() +
                               " 2> " + (folder / "err.txt").string();
   const int status = std::system(command.c_str());
@@ -75,7 +77,7 @@ TEST_F(EvaluateProgramTest, WritesTablesAndFiguresDeterministically) {
 }
 
 TEST_F(EvaluateProgramTest, ScenarioFilesGiveAPicturePerScenarioAndModel) {
-  const std::string scenarios = std::string(COLAV_SOURCE_DIR) + "/configs/scenarios/";
+  const std::string scenarios = std::string(testing_util::kSourceDir) + "/configs/scenarios/";
   const CommandResult result =
       RunEvaluate("--policy " + Path("reactive.pt") + " --name steer --scenario " + scenarios +
                       "head-on.yaml --scenario " + scenarios +

@@ -9,6 +9,7 @@
 #include "env/scenario_file.h"
 #include "env/trace.h"
 #include "eval/replay/replay_recorder.h"
+#include "tests/src/project_paths.h"
 
 namespace colav::testing_util {
 
@@ -19,7 +20,7 @@ struct RecordedEpisode {
 
 inline RecordedEpisode HeadOnEpisode(double thrust = 1.0, const std::string& label = "straight") {
   const Scenario scenario =
-      LoadScenarioFile(std::string(COLAV_SOURCE_DIR) + "/configs/scenarios/head-on.yaml");
+      LoadScenarioFile(std::string(kSourceDir) + "/configs/scenarios/head-on.yaml");
   Environment env(EnvironmentConfig{}, std::make_shared<FixedScenarioSource>(scenario));
   std::vector<float> observation(kObservationSize);
   env.Reset(0, observation.data());

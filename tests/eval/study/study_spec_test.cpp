@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 
+#include "tests/src/project_paths.h"
 #include "tests/src/test_util.h"
 
 namespace colav {
@@ -106,8 +107,8 @@ TEST(StudySpecTest, ReadsTheGoalAsBoundsOnTheReportsMetrics) {
 // as the claims need: 5 training seeds, the same 1,000 scenarios, the authors' three agents.
 TEST(StudySpecTest, ShippedStudiesAreValid) {
   int checked = 0;
-  for (const auto& entry :
-       std::filesystem::directory_iterator(std::filesystem::path(COLAV_SOURCE_DIR) / "studies")) {
+  for (const auto& entry : std::filesystem::directory_iterator(
+           std::filesystem::path(testing_util::kSourceDir) / "studies")) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".yaml" || name == "quickstart.yaml" ||
         name == "paper_results.yaml") {
@@ -121,14 +122,15 @@ TEST(StudySpecTest, ShippedStudiesAreValid) {
     ++checked;
   }
   EXPECT_GE(checked, 2);  // paper.yaml and ablation.yaml at least
-  EXPECT_EQ(LoadStudySpec(std::filesystem::path(COLAV_SOURCE_DIR) / "studies" / "ablation.yaml")
-                .evaluation.compare_to,
-            "current");
+  EXPECT_EQ(
+      LoadStudySpec(std::filesystem::path(testing_util::kSourceDir) / "studies" / "ablation.yaml")
+          .evaluation.compare_to,
+      "current");
 }
 
 TEST(StudySpecTest, ShippedQuickstartStudyIsValid) {
-  const StudySpec spec =
-      LoadStudySpec(std::filesystem::path(COLAV_SOURCE_DIR) / "studies" / "quickstart.yaml");
+  const StudySpec spec = LoadStudySpec(std::filesystem::path(testing_util::kSourceDir) / "studies" /
+                                       "quickstart.yaml");
   EXPECT_EQ(spec.name, "quickstart");
   EXPECT_EQ(spec.ppo_configs.size(), 2U);
   EXPECT_TRUE(std::filesystem::is_regular_file(spec.evaluation.paper_results));
