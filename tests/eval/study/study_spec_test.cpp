@@ -15,6 +15,11 @@ namespace {
 using testing_util::TemporaryFolder;
 using testing_util::UserErrorMessage;
 
+// The repository's studies/ folder.
+std::filesystem::path ShippedStudies() {
+  return std::filesystem::path(testing_util::kSourceDir) / "studies";
+}
+
 std::filesystem::path WriteStudy(const TemporaryFolder& folder, const std::string& text) {
   const std::filesystem::path path = folder / "study.yaml";
   std::ofstream(path) << text;
@@ -107,8 +112,7 @@ TEST(StudySpecTest, ReadsTheGoalAsBoundsOnTheReportsMetrics) {
 // as the claims need: 5 training seeds, the same 1,000 scenarios, the authors' three agents.
 TEST(StudySpecTest, ShippedStudiesAreValid) {
   int checked = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(
-           std::filesystem::path(testing_util::kSourceDir) / "studies")) {
+  for (const auto& entry : std::filesystem::directory_iterator(ShippedStudies())) {
     const std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".yaml" || name == "quickstart.yaml" ||
         name == "paper_results.yaml") {
@@ -122,15 +126,11 @@ TEST(StudySpecTest, ShippedStudiesAreValid) {
     ++checked;
   }
   EXPECT_GE(checked, 2);  // paper.yaml and ablation.yaml at least
-  EXPECT_EQ(
-      LoadStudySpec(std::filesystem::path(testing_util::kSourceDir) / "studies" / "ablation.yaml")
-          .evaluation.compare_to,
-      "current");
+  EXPECT_EQ(LoadStudySpec(ShippedStudies() / "ablation.yaml").evaluation.compare_to, "current");
 }
 
 TEST(StudySpecTest, ShippedQuickstartStudyIsValid) {
-  const StudySpec spec = LoadStudySpec(std::filesystem::path(testing_util::kSourceDir) / "studies" /
-                                       "quickstart.yaml");
+  const StudySpec spec = LoadStudySpec(ShippedStudies() / "quickstart.yaml");
   EXPECT_EQ(spec.name, "quickstart");
   EXPECT_EQ(spec.ppo_configs.size(), 2U);
   EXPECT_TRUE(std::filesystem::is_regular_file(spec.evaluation.paper_results));
