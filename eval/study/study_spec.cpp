@@ -252,6 +252,7 @@ EnsembleSpec ReadEnsemble(const Reader& reader, const YAML::Node& name, const YA
   ensemble.count = most;
   if (node["count"]) {
     ensemble.count = static_cast<int>(reader.Integer(node["count"], key + ".count", 1, most));
+    ensemble.count_given = true;
   }
   return ensemble;
 }
@@ -668,7 +669,8 @@ StudySpec SelectModels(StudySpec spec, const std::vector<std::string>& only, int
   if (seeds > 0) {
     spec.ppo_seeds = seeds;
     for (EnsembleSpec& ensemble : spec.ensembles) {
-      ensemble.count = std::min(ensemble.count, ensemble.MaxCount(seeds));
+      const int most = ensemble.MaxCount(seeds);
+      ensemble.count = ensemble.count_given ? std::min(ensemble.count, most) : most;
     }
     spec.ensembles.erase(std::remove_if(spec.ensembles.begin(), spec.ensembles.end(),
                                         [](const EnsembleSpec& e) { return e.count == 0; }),

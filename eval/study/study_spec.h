@@ -93,6 +93,9 @@ struct EnsembleSpec {
   std::optional<double> near_within_m;
   /// Member k (k >= 1) steers from the vessel's k-th stall on, the last to the episode's end.
   std::optional<StallRule> stall;
+  /// `count` was written in the study file; otherwise it is the most the training seeds give
+  /// (MaxCount), also when study --seeds changes them.
+  bool count_given = false;
 
   /// The training seed of member `member` (an index into members) in ensemble `k`.
   int MemberSeed(std::size_t member, int k) const;

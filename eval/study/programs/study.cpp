@@ -85,7 +85,10 @@ int Study(int argc, char** argv) {
   app.add_option("--out", out, "study folder (created; reused to resume)")->required();
   app.add_option("--jobs", jobs, "programs running at once (default: one per core of this rank)")
       ->check(CLI::Range(1, 64));
-  app.add_option("--seeds", seeds, "training seeds of every PPO configuration (0 .. N-1)")
+  app.add_option("--seeds", seeds,
+                 "training seeds of every PPO configuration (0 .. N-1); an ensemble kind without "
+                 "a count in the file follows them, one with a count keeps it (at most what they "
+                 "give)")
       ->check(CLI::Range(1, 1000));
   app.add_option("--only", only,
                  "run only these models (PPO configurations, ensembles, students, fine-tunes), "

@@ -195,6 +195,11 @@ TEST(StudySpecTest, EnsemblesTakeDisjointRuns) {
   ASSERT_EQ(one_seed.ensembles.size(), 3U);
   EXPECT_EQ(one_seed.ensembles[0].name, "pair");
   EXPECT_EQ(one_seed.ensembles[0].count, 1);
+  // More seeds, more ensembles of a kind without a count; a count in the file stays.
+  const StudySpec eight_seeds = SelectModels(spec, {}, 8);
+  EXPECT_EQ(eight_seeds.ensembles[0].count, 4);  // mixed: 4 pairs of shallow_locked runs
+  EXPECT_EQ(eight_seeds.ensembles[1].count, 2);  // pair: count 2 in the file
+  EXPECT_EQ(eight_seeds.ensembles[3].count, 8);
   EXPECT_TRUE(SelectModels(spec, {"baseline", "shallow_locked"}, 0).ensembles.size() == 1U);
 }
 
