@@ -3,11 +3,10 @@
 #include <algorithm>
 
 #include "env/environment_spec.h"
+#include "models/float_data.h"
 
 namespace colav {
 namespace {
-
-float* Data(const torch::Tensor& tensor) { return tensor.data_ptr<float>(); }
 
 std::vector<torch::Tensor> ZerosLike(const std::vector<torch::Tensor>& tensors) {
   std::vector<torch::Tensor> zeros;
@@ -91,10 +90,11 @@ const float* FastLayerStack::Forward(const float* input, int B) {
     const FastLayer& layer = layers_[i];
     float* y = outputs_[i].data();
     if (layer.kind == FastLayer::Kind::kLinear) {
-      kernels::LinearForward(Data(layer.weight), Data(layer.bias), x, layer.in_size, layer.out_size,
-                             B, y);
+      kernels::LinearForward(FloatData(layer.weight), FloatData(layer.bias), x, layer.in_size,
+                             layer.out_size, B, y);
     } else {
-      kernels::CircularConvForward(layer.conv, Data(layer.weight), Data(layer.bias), x, B, y);
+      kernels::CircularConvForward(layer.conv, FloatData(layer.weight), FloatData(layer.bias), x, B,
+                                   y);
     }
     Activate(layer.activation, y, layer.out_size * B);
     x = y;
@@ -111,12 +111,12 @@ void FastLayerStack::Backward(const float* input, float* d_output, int B, float*
     float* dx =
         i == 0 ? d_input : (dy == gradient_a_.data() ? gradient_b_.data() : gradient_a_.data());
     if (layer.kind == FastLayer::Kind::kLinear) {
-      kernels::LinearBackward(Data(layer.weight), x, dy, layer.in_size, layer.out_size, B,
-                              Data(layer.weight_grad), Data(layer.bias_grad), dx,
+      kernels::LinearBackward(FloatData(layer.weight), x, dy, layer.in_size, layer.out_size, B,
+                              FloatData(layer.weight_grad), FloatData(layer.bias_grad), dx,
                               transposed_.data());
     } else {
-      kernels::CircularConvBackward(layer.conv, Data(layer.weight), x, dy, B,
-                                    Data(layer.weight_grad), Data(layer.bias_grad), dx);
+      kernels::CircularConvBackward(layer.conv, FloatData(layer.weight), x, dy, B,
+                                    FloatData(layer.weight_grad), FloatData(layer.bias_grad), dx);
     }
     dy = dx;
   }
@@ -375,7 +375,7 @@ void FastActorCritic::Backward(float* d_mean, float* d_value, const float* d_log
   actor_.Backward(TrunkInput(), d_mean, B, input_gradient ? d_features_actor_.data() : nullptr);
   critic_.Backward(CriticTrunkInput(), d_value, B,
                    input_gradient ? d_features_critic_.data() : nullptr);
-  std::copy(d_log_std, d_log_std + kActionSize, Data(log_std_grad_));
+  std::copy(d_log_std, d_log_std + kActionSize, FloatData(log_std_grad_));
   if (!input_gradient) return;
   // Both heads read the features: their gradients add up; so do their state rows when both losses
   // train one memory.

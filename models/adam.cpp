@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "models/actor_critic_kernels.h"
+#include "models/float_data.h"
 
 namespace colav {
 namespace {
@@ -13,7 +14,6 @@ namespace {
 // clip_grad_norm_'s guard against a zero norm.
 constexpr double kNormEpsilon = 1e-6;
 
-float* Data(const torch::Tensor& tensor) { return tensor.data_ptr<float>(); }
 int Size(const torch::Tensor& tensor) { return static_cast<int>(tensor.numel()); }
 
 // AdamArithmetic::kDoubleStep on n values.
@@ -37,7 +37,7 @@ void AdamUpdateWithDoubleStep(const AdamOptions& options, double step_size,
 double GradientNorm(const std::vector<torch::Tensor>& gradients) {
   double sum = 0.0;
   for (const torch::Tensor& gradient : gradients) {
-    sum += kernels::SumOfSquares(Data(gradient), Size(gradient));
+    sum += kernels::SumOfSquares(FloatData(gradient), Size(gradient));
   }
   return std::sqrt(sum);
 }
@@ -73,12 +73,14 @@ void Adam::Step(const std::vector<torch::Tensor>& gradients, double gradient_sca
     TORCH_CHECK(gradient.is_contiguous() && gradient.numel() == parameters_[i].numel(),
                 "Adam needs contiguous gradients of the parameters' sizes");
     if (arithmetic_ == AdamArithmetic::kFloat) {
-      kernels::AdamUpdate(coefficients, Data(gradient), Data(exp_avg_[i]), Data(exp_avg_sq_[i]),
-                          Data(parameters_[i]), Size(parameters_[i]));
+      kernels::AdamUpdate(coefficients, FloatData(gradient), FloatData(exp_avg_[i]),
+                          FloatData(exp_avg_sq_[i]), FloatData(parameters_[i]),
+                          Size(parameters_[i]));
     } else {
       AdamUpdateWithDoubleStep(options_, step_size, sqrt_bias_correction2,
-                               coefficients.gradient_scale, Data(gradient), Data(exp_avg_[i]),
-                               Data(exp_avg_sq_[i]), Data(parameters_[i]), Size(parameters_[i]));
+                               coefficients.gradient_scale, FloatData(gradient),
+                               FloatData(exp_avg_[i]), FloatData(exp_avg_sq_[i]),
+                               FloatData(parameters_[i]), Size(parameters_[i]));
     }
   }
 }

@@ -8,12 +8,6 @@
 #include "models/circular_kernels.h"
 
 namespace colav {
-namespace {
-
-constexpr char kStrideKey[] = "stride";
-constexpr char kPaddingKey[] = "padding";
-
-}  // namespace
 
 torch::Tensor CircularConv1dFunction::forward(torch::autograd::AutogradContext* context,
                                               const torch::Tensor& x, const torch::Tensor& weight,

@@ -19,6 +19,10 @@
 
 namespace colav {
 
+// Where the circular layers' autograd functions keep their stride and padding (saved_data).
+inline constexpr char kStrideKey[] = "stride";
+inline constexpr char kPaddingKey[] = "padding";
+
 // short[b, o, i] = bias[o] + sum_{c, t} weight[o, c, t] long[b, c, (stride i + t - padding) mod N]
 torch::Tensor CircularGather(const torch::Tensor& long_signal, const torch::Tensor& weight,
                              const torch::Tensor& bias, std::int64_t stride, std::int64_t padding);

@@ -6,12 +6,6 @@
 #include "models/circular_kernels.h"
 
 namespace colav {
-namespace {
-
-constexpr char kStrideKey[] = "stride";
-constexpr char kPaddingKey[] = "padding";
-
-}  // namespace
 
 std::int64_t CptcWrapWidth(std::int64_t kernel_size, std::int64_t stride, std::int64_t padding) {
   return std::max<std::int64_t>(0, (kernel_size - 1 - padding) / stride);

@@ -4,11 +4,10 @@
 #include <cmath>
 
 #include "models/actor_critic_kernels.h"
+#include "models/float_data.h"
 
 namespace colav {
 namespace {
-
-float* Data(const torch::Tensor& tensor) { return tensor.data_ptr<float>(); }
 
 float Sigmoid(float x) { return 1.0f / (1.0f + std::exp(-x)); }
 
@@ -62,12 +61,12 @@ const float* FastGru::ForwardSequences(const float* x, const float* initial,
   L_ = L;
   S_ = S;
   reset_ = reset;
-  kernels::LinearForward(Data(weight_ih_), Data(bias_ih_), x, input_size_, 3 * H, C,
+  kernels::LinearForward(FloatData(weight_ih_), FloatData(bias_ih_), x, input_size_, 3 * H, C,
                          input_gates_.data());
-  kernels::Transpose(Data(weight_hh_), 3 * H, H, weight_hh_transposed_.data());
+  kernels::Transpose(FloatData(weight_hh_), 3 * H, H, weight_hh_transposed_.data());
   const float* gi = input_gates_.data();
   float* gh = recurrent_gates_.data();
-  const float* b_hh = Data(bias_hh_);
+  const float* b_hh = FloatData(bias_hh_);
   for (int t = 0; t < L; ++t) {
     const int c0 = t * S;
     for (int j = 0; j < H; ++j) {
@@ -126,8 +125,8 @@ void FastGru::BackwardSequences(const float* x, float* d_states, float* d_x) {
     // d previous += W_hh^T d_gh; it reaches the step before unless an episode starts here.
     // Row s of the product: (W_hh^T d_gh)_s, S rows of H values.
     float* d_recurrent = d_recurrent_product_.data();
-    kernels::MatMul(d_recurrent, H, d_recurrent_gates_.data() + c0, 1, C, Data(weight_hh_), H, S, H,
-                    3 * H, /*accumulate=*/false);
+    kernels::MatMul(d_recurrent, H, d_recurrent_gates_.data() + c0, 1, C, FloatData(weight_hh_), H,
+                    S, H, 3 * H, /*accumulate=*/false);
     for (int j = 0; j < H; ++j) {
       for (int s = 0; s < S; ++s) {
         const int k = j * C + c0 + s;
@@ -138,13 +137,13 @@ void FastGru::BackwardSequences(const float* x, float* d_states, float* d_x) {
     }
   }
   WeightGradient(d_input_gates_.data(), x, 3 * H, input_size_, C, transposed_.data(),
-                 Data(gradients_[0]));
+                 FloatData(gradients_[0]));
   WeightGradient(d_recurrent_gates_.data(), previous_.data(), 3 * H, H, C, transposed_.data(),
-                 Data(gradients_[1]));
-  RowSums(d_input_gates_.data(), 3 * H, C, Data(gradients_[2]));
-  RowSums(d_recurrent_gates_.data(), 3 * H, C, Data(gradients_[3]));
-  kernels::MatMul(d_x, C, Data(weight_ih_), 1, input_size_, d_input_gates_.data(), C, input_size_,
-                  C, 3 * H, /*accumulate=*/false);
+                 FloatData(gradients_[1]));
+  RowSums(d_input_gates_.data(), 3 * H, C, FloatData(gradients_[2]));
+  RowSums(d_recurrent_gates_.data(), 3 * H, C, FloatData(gradients_[3]));
+  kernels::MatMul(d_x, C, FloatData(weight_ih_), 1, input_size_, d_input_gates_.data(), C,
+                  input_size_, C, 3 * H, /*accumulate=*/false);
 }
 
 }  // namespace colav

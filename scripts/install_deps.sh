@@ -3,7 +3,7 @@
 set -euo pipefail
 
 PACKAGES=(
-  cmake g++ make ccache pkg-config clang-format git
+  cmake g++ make ninja-build ccache pkg-config clang-format git
   libtorch-dev libeigen3-dev libfcl-dev libhdf5-dev
   libyaml-cpp-dev nlohmann-json3-dev libspdlog-dev libcli11-dev
   libgtest-dev libgmock-dev libbenchmark-dev

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "env/angles.h"
 #include "env/range_finder.h"
 #include "env/vessel_model.h"
 
@@ -17,7 +18,6 @@ namespace {
 constexpr double kFollowWidth = 300.0;
 constexpr double kMinHullWidthPixels = 8.0;
 constexpr double kHeadingLinePixels = 24.0;
-constexpr double kPi = 3.14159265358979323846;
 
 using Surface = std::unique_ptr<cairo_surface_t, decltype(&cairo_surface_destroy)>;
 using Context = std::unique_ptr<cairo_t, decltype(&cairo_destroy)>;

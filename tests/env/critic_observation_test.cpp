@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "env/angles.h"
 #include "env/batched_environment.h"
 #include "env/environment.h"
 #include "env/scenario_file.h"
@@ -15,8 +16,6 @@
 
 namespace colav {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 VesselObstacleSpec Vessel(double x, double y, double course, double speed, double width) {
   VesselObstacleSpec vessel;

@@ -15,7 +15,7 @@ namespace {
 
 constexpr int kWorlds = 4;
 
-EnvironmentConfig ShortEpisodes() {
+EnvironmentConfig SeventyStepEpisodes() {
   EnvironmentConfig config;
   config.max_steps = 70;  // episodes end within the test, and some are cut mid-episode
   return config;
@@ -54,14 +54,14 @@ void ExpectSameStep(const BatchedEnvironment& a, const BatchedEnvironment& b) {
 
 TEST(WorldHistory, RestoredWorldsContinueBitForBit) {
   std::mt19937 random(5);
-  BatchedEnvironment original(ShortEpisodes(), kWorlds, 2, 17);
+  BatchedEnvironment original(SeventyStepEpisodes(), kWorlds, 2, 17);
   original.Reset();
   for (int t = 0; t < 150; ++t) original.Step(RandomActions(random).data());
   std::uint64_t episodes_started = 0;
   for (const WorldHistory& history : original.histories()) episodes_started += history.episode;
   ASSERT_GT(episodes_started, 0U);  // the histories start in later episodes than the first
 
-  BatchedEnvironment restored(ShortEpisodes(), kWorlds, 1, 17);  // another thread count
+  BatchedEnvironment restored(SeventyStepEpisodes(), kWorlds, 1, 17);  // another thread count
   restored.Reset();
   restored.Restore(original.histories());
   ExpectSameBytes(original.observations(), restored.observations(), kWorlds * kObservationSize);
@@ -75,7 +75,7 @@ TEST(WorldHistory, RestoredWorldsContinueBitForBit) {
 }
 
 TEST(WorldHistory, RestoreRefusesHistoriesThatCannotBeThisEnvironments) {
-  BatchedEnvironment envs(ShortEpisodes(), kWorlds, 1, 17);
+  BatchedEnvironment envs(SeventyStepEpisodes(), kWorlds, 1, 17);
   envs.Reset();
   std::vector<WorldHistory> histories = envs.histories();
   EXPECT_THROW(envs.Restore({histories.begin(), histories.end() - 1}), std::invalid_argument);

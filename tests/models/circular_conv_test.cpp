@@ -11,19 +11,17 @@
 namespace colav {
 namespace {
 
-const auto kDouble = torch::TensorOptions().dtype(torch::kFloat64);
-
-struct Layer {
+struct ConvLayer {
   std::int64_t in_channels, out_channels, kernel_size, stride, padding, input_length;
 };
 // The encoder layers of both architectures.
-const std::vector<Layer> kEncoderLayers = {
+const std::vector<ConvLayer> kEncoderLayers = {
     {1, 1, 45, 15, 15, 180}, {1, 3, 45, 15, 15, 180}, {3, 2, 3, 1, 1, 12}, {2, 1, 3, 1, 1, 12}};
 
 // Same initialisation (same random draws), outputs and gradients as torch::nn::Conv1d with
 // circular padding, the layer of the reference encoder.
 TEST(CircularConv1d, MatchesLibTorchsCircularConv1d) {
-  for (const Layer& layer : kEncoderLayers) {
+  for (const ConvLayer& layer : kEncoderLayers) {
     torch::manual_seed(21);
     torch::nn::Conv1d reference(
         torch::nn::Conv1dOptions(layer.in_channels, layer.out_channels, layer.kernel_size)
@@ -59,16 +57,17 @@ TEST(CircularConv1d, MatchesLibTorchsCircularConv1d) {
 
 TEST(CircularConv1dFunction, BackwardMatchesFiniteDifferences) {
   torch::manual_seed(22);
-  for (const Layer& layer : {Layer{2, 3, 45, 15, 15, 180}, Layer{3, 2, 3, 1, 1, 12}}) {
+  for (const ConvLayer& layer : {ConvLayer{2, 3, 45, 15, 15, 180}, ConvLayer{3, 2, 3, 1, 1, 12}}) {
     testing::ExpectGradientsMatchFiniteDifferences(
         [&](const std::vector<torch::Tensor>& inputs) {
           return CircularConv1dFunction::apply(inputs[0], inputs[1], inputs[2], layer.stride,
                                                layer.padding);
         },
-        {torch::randn({2, layer.in_channels, layer.input_length}, kDouble).requires_grad_(true),
-         torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, kDouble)
+        {torch::randn({2, layer.in_channels, layer.input_length}, torch::kFloat64)
              .requires_grad_(true),
-         torch::randn({layer.out_channels}, kDouble).requires_grad_(true)},
+         torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, torch::kFloat64)
+             .requires_grad_(true),
+         torch::randn({layer.out_channels}, torch::kFloat64).requires_grad_(true)},
         {"x", "weight", "bias"});
   }
 }

@@ -13,16 +13,14 @@ namespace {
 
 namespace F = torch::nn::functional;
 
-const auto kDouble = torch::TensorOptions().dtype(torch::kFloat64);
-
 // A Conv1d layer shape, in the encoder's direction: in_channels -> out_channels.
-struct Layer {
+struct CptcLayer {
   std::int64_t in_channels, out_channels, kernel_size, stride, padding;
 };
-constexpr Layer kWideLayer{1, 1, 45, 15, 15};   // the shallow model's layer
-constexpr Layer kWideLayer3{1, 3, 45, 15, 15};  // the deep model's first layer
-constexpr Layer kNarrowLayer{3, 2, 3, 1, 1};    // the deep model's second layer
-constexpr Layer kNarrowLayer2{2, 1, 3, 1, 1};   // the deep model's third layer
+constexpr CptcLayer kWideLayer{1, 1, 45, 15, 15};   // the shallow model's layer
+constexpr CptcLayer kWideLayer3{1, 3, 45, 15, 15};  // the deep model's first layer
+constexpr CptcLayer kNarrowLayer{3, 2, 3, 1, 1};    // the deep model's second layer
+constexpr CptcLayer kNarrowLayer2{2, 1, 3, 1, 1};   // the deep model's third layer
 
 // The encoder's circular Conv1d, through LibTorch's own circular padding (an independent oracle).
 torch::Tensor CircularConv1d(const torch::Tensor& x, const torch::Tensor& weight,
@@ -46,18 +44,18 @@ TEST(CptcWrapWidth, IsOneColumnForThePapersLayers) {
 // vector-Jacobian product of the convolution. Checked for every layer shape of both decoders.
 TEST(CircularConvTranspose1dFunction, EqualsTheAdjointOfTheCircularConv1d) {
   torch::manual_seed(1);
-  for (const Layer& layer : {kWideLayer, kWideLayer3, kNarrowLayer, kNarrowLayer2}) {
+  for (const CptcLayer& layer : {kWideLayer, kWideLayer3, kNarrowLayer, kNarrowLayer2}) {
     const std::int64_t input_length = layer.stride == 15 ? 180 : 12;
     const torch::Tensor weight =
-        torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, kDouble);
+        torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, torch::kFloat64);
     const torch::Tensor x =
-        torch::randn({3, layer.in_channels, input_length}, kDouble).requires_grad_(true);
+        torch::randn({3, layer.in_channels, input_length}, torch::kFloat64).requires_grad_(true);
     const torch::Tensor y = CircularConv1d(x, weight, layer.stride, layer.padding);
     const torch::Tensor z = torch::randn_like(y);
     const torch::Tensor vjp = torch::autograd::grad({y}, {x}, {z})[0];
 
-    const torch::Tensor cptc =
-        Cptc(z, weight, torch::zeros({layer.in_channels}, kDouble), layer.stride, layer.padding);
+    const torch::Tensor cptc = Cptc(z, weight, torch::zeros({layer.in_channels}, torch::kFloat64),
+                                    layer.stride, layer.padding);
     ASSERT_EQ(cptc.sizes(), vjp.sizes());
     EXPECT_LT((cptc - vjp).abs().max().item<double>(), 1e-12)
         << "kernel " << layer.kernel_size << ", channels " << layer.in_channels << "<-"
@@ -68,9 +66,9 @@ TEST(CircularConvTranspose1dFunction, EqualsTheAdjointOfTheCircularConv1d) {
 // x̂[n] = b + sum_i sum_k w[k] z[i] 1[(15 i + k - 15) mod 180 = n] (spec reference-learning 2.3).
 TEST(CircularConvTranspose1dFunction, MatchesTheIndexFormula) {
   torch::manual_seed(2);
-  const torch::Tensor z = torch::randn({1, 1, 12}, kDouble);
-  const torch::Tensor weight = torch::randn({1, 1, 45}, kDouble);
-  const torch::Tensor bias = torch::randn({1}, kDouble);
+  const torch::Tensor z = torch::randn({1, 1, 12}, torch::kFloat64);
+  const torch::Tensor weight = torch::randn({1, 1, 45}, torch::kFloat64);
+  const torch::Tensor bias = torch::randn({1}, torch::kFloat64);
   std::vector<double> expected(180, bias.item<double>());
   for (int i = 0; i < 12; ++i) {
     for (int k = 0; k < 45; ++k) {
@@ -88,12 +86,12 @@ TEST(CircularConvTranspose1dFunction, MatchesTheIndexFormula) {
 // ConvTranspose1d with its own padding, crop that many strides at each end.
 TEST(CircularConvTranspose1dFunction, EqualsWrapTransposeAndCrop) {
   torch::manual_seed(12);
-  for (const Layer& layer : {kWideLayer, kWideLayer3, kNarrowLayer, kNarrowLayer2}) {
+  for (const CptcLayer& layer : {kWideLayer, kWideLayer3, kNarrowLayer, kNarrowLayer2}) {
     const std::int64_t wrap = CptcWrapWidth(layer.kernel_size, layer.stride, layer.padding);
-    const torch::Tensor z = torch::randn({3, layer.out_channels, 12}, kDouble);
+    const torch::Tensor z = torch::randn({3, layer.out_channels, 12}, torch::kFloat64);
     const torch::Tensor weight =
-        torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, kDouble);
-    const torch::Tensor bias = torch::randn({layer.in_channels}, kDouble);
+        torch::randn({layer.out_channels, layer.in_channels, layer.kernel_size}, torch::kFloat64);
+    const torch::Tensor bias = torch::randn({layer.in_channels}, torch::kFloat64);
     const torch::Tensor wrapped =
         torch::cat({z.narrow(2, 12 - wrap, wrap), z, z.narrow(2, 0, wrap)}, 2);
     const torch::Tensor transposed = F::conv_transpose1d(
@@ -109,14 +107,15 @@ TEST(CircularConvTranspose1dFunction, EqualsWrapTransposeAndCrop) {
 
 // The "true circular" rows of the fixture table in spec reference-learning 2.3.
 TEST(CircularConvTranspose1dFunction, ReproducesTheTrueCircularFixtureTable) {
-  const torch::Tensor z = torch::arange(1, 13, kDouble).view({1, 1, 12});
-  const torch::Tensor bias = torch::zeros({1}, kDouble);
+  const torch::Tensor z = torch::arange(1, 13, torch::kFloat64).view({1, 1, 12});
+  const torch::Tensor bias = torch::zeros({1}, torch::kFloat64);
   const std::vector<int> n = {0, 7, 14, 15, 29, 90, 164, 165, 172, 179};
   const std::vector<double> ones_row = {15, 15, 15, 6, 6, 21, 33, 24, 24, 24};
   const std::vector<double> ramp_row = {375, 480, 585, 60, 144, 285, 927, 510, 678, 846};
 
-  const torch::Tensor ones = Cptc(z, torch::ones({1, 1, 45}, kDouble), bias, 15, 15);
-  const torch::Tensor ramp = Cptc(z, torch::arange(45, kDouble).view({1, 1, 45}), bias, 15, 15);
+  const torch::Tensor ones = Cptc(z, torch::ones({1, 1, 45}, torch::kFloat64), bias, 15, 15);
+  const torch::Tensor ramp =
+      Cptc(z, torch::arange(45, torch::kFloat64).view({1, 1, 45}), bias, 15, 15);
   for (std::size_t i = 0; i < n.size(); ++i) {
     EXPECT_DOUBLE_EQ(ones[0][0][n[i]].item<double>(), ones_row[i]) << "w = 1, n = " << n[i];
     EXPECT_DOUBLE_EQ(ramp[0][0][n[i]].item<double>(), ramp_row[i]) << "w = k, n = " << n[i];
@@ -132,9 +131,9 @@ void ExpectBackwardMatchesFiniteDifferences(std::int64_t in_channels, std::int64
       [&](const std::vector<torch::Tensor>& inputs) {
         return Cptc(inputs[0], inputs[1], inputs[2], stride, padding);
       },
-      {torch::randn({2, in_channels, 12}, kDouble).requires_grad_(true),
-       torch::randn({in_channels, out_channels, kernel_size}, kDouble).requires_grad_(true),
-       torch::randn({out_channels}, kDouble).requires_grad_(true)},
+      {torch::randn({2, in_channels, 12}, torch::kFloat64).requires_grad_(true),
+       torch::randn({in_channels, out_channels, kernel_size}, torch::kFloat64).requires_grad_(true),
+       torch::randn({out_channels}, torch::kFloat64).requires_grad_(true)},
       {"z", "weight", "bias"});
 }
 
@@ -149,9 +148,9 @@ TEST(CircularConvTranspose1dFunction, BackwardMatchesFiniteDifferencesNarrowLaye
 // The backward skips the gradients nobody asked for and still gets the others right.
 TEST(CircularConvTranspose1dFunction, GradientOfTheWeightAloneMatchesTheFullBackward) {
   torch::manual_seed(4);
-  const torch::Tensor z = torch::randn({4, 2, 12}, kDouble);
-  const torch::Tensor weight = torch::randn({2, 3, 45}, kDouble).requires_grad_(true);
-  const torch::Tensor bias = torch::randn({3}, kDouble);
+  const torch::Tensor z = torch::randn({4, 2, 12}, torch::kFloat64);
+  const torch::Tensor weight = torch::randn({2, 3, 45}, torch::kFloat64).requires_grad_(true);
+  const torch::Tensor bias = torch::randn({3}, torch::kFloat64);
   const torch::Tensor weight_only =
       torch::autograd::grad({Cptc(z, weight, bias, 15, 15).square().sum()}, {weight})[0];
   const torch::Tensor z_variable = z.clone().requires_grad_(true);

@@ -8,8 +8,6 @@
 namespace colav {
 namespace {
 
-const auto kDouble = torch::TensorOptions().dtype(torch::kFloat64);
-
 // Two samples, two latent dimensions:
 //   sample 0: reconstruction 0.5 everywhere (BCE ln 2 per value whatever the target),
 //             mu = (1, 0), logvar = (0, ln 2): KL = 1/2 + (1 - ln 2)/2;
@@ -24,11 +22,12 @@ struct TinyCase {
 
 TinyCase MakeTinyCase() {
   TinyCase tiny;
-  tiny.output.reconstruction =
-      torch::stack({torch::full({180}, 0.5, kDouble), torch::full({180}, 0.9, kDouble)});
-  tiny.target = torch::stack({torch::linspace(0, 1, 180, kDouble), torch::ones({180}, kDouble)});
-  tiny.output.mu = torch::tensor({{1.0, 0.0}, {0.0, 0.0}}, kDouble);
-  tiny.output.logvar = torch::tensor({{0.0, std::log(2.0)}, {0.0, 0.0}}, kDouble);
+  tiny.output.reconstruction = torch::stack(
+      {torch::full({180}, 0.5, torch::kFloat64), torch::full({180}, 0.9, torch::kFloat64)});
+  tiny.target = torch::stack(
+      {torch::linspace(0, 1, 180, torch::kFloat64), torch::ones({180}, torch::kFloat64)});
+  tiny.output.mu = torch::tensor({{1.0, 0.0}, {0.0, 0.0}}, torch::kFloat64);
+  tiny.output.logvar = torch::tensor({{0.0, std::log(2.0)}, {0.0, 0.0}}, torch::kFloat64);
   return tiny;
 }
 
@@ -62,16 +61,16 @@ TEST(ComputePerSampleVaeLoss, GivesEachSamplesTerms) {
 // stay finite, with each log term clamped at -100 as PyTorch does.
 TEST(ComputePerSampleVaeLoss, AcceptsNoisyTargetsAndSaturatedReconstructions) {
   ConvVaeImpl::Output output;
-  output.reconstruction = torch::full({1, 180}, 0.3, kDouble);
+  output.reconstruction = torch::full({1, 180}, 0.3, torch::kFloat64);
   output.reconstruction[0][0] = 0.0;
   output.reconstruction[0][1] = 1.0;
   output.reconstruction[0][2] = 0.0;
-  torch::Tensor target = torch::full({1, 180}, 0.5, kDouble);
+  torch::Tensor target = torch::full({1, 180}, 0.5, torch::kFloat64);
   target[0][0] = -0.05;
   target[0][1] = 1.05;
   target[0][2] = 1.0;
-  output.mu = torch::zeros({1, 2}, kDouble);
-  output.logvar = torch::zeros({1, 2}, kDouble);
+  output.mu = torch::zeros({1, 2}, torch::kFloat64);
+  output.logvar = torch::zeros({1, 2}, torch::kFloat64);
 
   const double expected = -(-0.05 * -100.0 + 1.05 * 0.0)   // r = 0, t = -0.05
                           - (1.05 * 0.0 + -0.05 * -100.0)  // r = 1, t = 1.05
@@ -87,11 +86,11 @@ TEST(ComputePerSampleVaeLoss, AcceptsNoisyTargetsAndSaturatedReconstructions) {
 TEST(ComputePerSampleVaeLoss, MatchesPyTorchsBceAndKlWithGradients) {
   torch::manual_seed(31);
   const torch::Tensor reconstruction =
-      (torch::rand({5, 180}, kDouble) * 0.98 + 0.01).requires_grad_(true);
-  const torch::Tensor target = torch::rand({5, 180}, kDouble) * 1.2 - 0.1;  // noisy targets
-  const torch::Tensor mu = torch::randn({5, 3}, kDouble).requires_grad_(true);
-  const torch::Tensor logvar = torch::randn({5, 3}, kDouble).requires_grad_(true);
-  const torch::Tensor output_weights = torch::rand({5}, kDouble);
+      (torch::rand({5, 180}, torch::kFloat64) * 0.98 + 0.01).requires_grad_(true);
+  const torch::Tensor target = torch::rand({5, 180}, torch::kFloat64) * 1.2 - 0.1;  // noisy targets
+  const torch::Tensor mu = torch::randn({5, 3}, torch::kFloat64).requires_grad_(true);
+  const torch::Tensor logvar = torch::randn({5, 3}, torch::kFloat64).requires_grad_(true);
+  const torch::Tensor output_weights = torch::rand({5}, torch::kFloat64);
 
   const VaeLoss loss = ComputePerSampleVaeLoss({reconstruction, mu, logvar}, target, 0.7);
   const torch::Tensor bce =
@@ -112,8 +111,8 @@ TEST(ComputePerSampleVaeLoss, MatchesPyTorchsBceAndKlWithGradients) {
 TEST(KlPerLatentDimension, CountsDimensionsAboveTheThresholdAsActive) {
   // Dimension 0: KL mu^2 / 2 averaged over (1, 3): 2.5. Dimension 1: 0.005 < 0.01. Dimension 2:
   // logvar = -1 at mu = 0: (e^-1 - 1 + 1) / 2 = 0.18.
-  const torch::Tensor mu = torch::tensor({{1.0, 0.1, 0.0}, {3.0, 0.1, 0.0}}, kDouble);
-  const torch::Tensor logvar = torch::tensor({{0.0, 0.0, -1.0}, {0.0, 0.0, -1.0}}, kDouble);
+  const torch::Tensor mu = torch::tensor({{1.0, 0.1, 0.0}, {3.0, 0.1, 0.0}}, torch::kFloat64);
+  const torch::Tensor logvar = torch::tensor({{0.0, 0.0, -1.0}, {0.0, 0.0, -1.0}}, torch::kFloat64);
   const torch::Tensor kl = KlPerLatentDimension(mu, logvar);
   EXPECT_NEAR(kl[0].item<double>(), 2.5, 1e-12);
   EXPECT_NEAR(kl[1].item<double>(), 0.005, 1e-12);

@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "env/environment_spec.h"
+#include "train/ppo/normal_log_density.h"
 
 namespace colav {
 namespace {
 
 // SB3's guard against a zero advantage spread.
 constexpr double kAdvantageEpsilon = 1e-8;
-const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
 
 // log(1 - tanh(u)^2) = 2 (log 2 - u - softplus(-2u)), without cancellation for large |u|.
 double LogOneMinusTanhSquared(double u) {

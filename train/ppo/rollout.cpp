@@ -4,12 +4,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "train/ppo/normal_log_density.h"
+
 namespace colav {
-namespace {
-
-const double kLogSqrtTwoPi = 0.5 * std::log(2.0 * M_PI);
-
-}  // namespace
 
 bool BootstrapsFromFinalObservation(bool terminated, bool truncated, bool timeouts_terminal) {
   return truncated && !terminated && !timeouts_terminal;
