@@ -50,12 +50,24 @@ fi
 if [ ${#tidy_sources[@]} -gt 0 ]; then
   # Reconfigure so that files added since the last build are in compile_commands.json.
   cmake -S . -B "$BUILD_DIR" >/dev/null
-  # The LibTorch targets include GCC's precompiled header (-include .../cmake_pch.hxx next to its
-  # .gch, which clang cannot read); without it clang parses the headers each file includes.
+  # Each file gets its unit's command: a unity build compiles several files as one unit
+  # (Unity/unity_N_cxx.cxx, which #includes them). The LibTorch targets include GCC's
+  # precompiled header (-include .../cmake_pch.hxx next to its .gch, which clang cannot read);
+  # without it clang parses the headers each file includes.
   commands_dir="$(mktemp -d)"
   trap 'rm -rf "$commands_dir"' EXIT
-  sed -E 's# -Winvalid-pch -include [^ ]*/cmake_pch\.hxx##' "$BUILD_DIR/compile_commands.json" \
-    >"$commands_dir/compile_commands.json"
+  /usr/bin/python3 - "$BUILD_DIR" "$commands_dir" <<'EOF'
+import json, re, sys
+entries = []
+for entry in json.load(open(sys.argv[1] + "/compile_commands.json")):
+    command = re.sub(r" -Winvalid-pch -include \S*/cmake_pch\.hxx", "", entry["command"])
+    unit = entry["file"]
+    files = [unit]
+    if "/Unity/" in unit:
+        files = re.findall(r'^#include "(.*)"$', open(unit).read(), re.M)
+    entries += [dict(entry, file=f, command=command.replace(unit, f)) for f in files]
+json.dump(entries, open(sys.argv[2] + "/compile_commands.json", "w"), indent=1)
+EOF
   echo "lint: clang-tidy on ${#tidy_sources[@]} files"
   printf '%s\n' "${tidy_sources[@]}" |
     xargs -P "$(nproc)" -n 1 clang-tidy -p "$commands_dir" --quiet \
