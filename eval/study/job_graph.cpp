@@ -26,11 +26,14 @@ constexpr double kPpoPaperPasses = 4.0;
 constexpr double kPpoUpdateShareAtPaperPasses = 0.6;
 constexpr double kPpoMemoryFactor = 1.75;
 constexpr double kVaeSecondsPerSeed = 12.0;
-// Measured: 43,000 episodes of 43 models (ensembles and recurrent students among them) in 443 s.
-// The networks a model runs move it little: on one thread, 300 test episodes take 5.2-5.8 s of
-// feed-forward agents, 6.2 s of a memory and 6.6-7.9 s of three-member ensembles (after the
-// program's 1 s start), so one rate per episode errs by at most 1.5 times.
-constexpr double kEvaluationEpisodesPerSecond = 100.0;
+// An evaluation's seconds per test episode of a model running N networks: a + b N, for an
+// evaluation beside another job (two at a time, as the PPO figures). Measured on studies'
+// evaluations of 1,000 scenarios side by side (critic_near_memory_far at 10 seeds, reusing the
+// first 5): 15,000 episodes of single networks (feed-forward and memories) in 203-208 s, 20,000
+// of three-member ensembles in 440-447 s. One evaluation alone on both cores runs about twice as
+// fast (43,000 episodes of 43 models in 443 s).
+constexpr double kEvaluationSecondsPerEpisode = 0.0095;
+constexpr double kEvaluationSecondsPerNetworkEpisode = 0.0043;
 constexpr double kDatasetSeconds = 2.0;
 constexpr double kFigureSeconds = 2.0;
 constexpr double kVaeFiguresSeconds = 150.0;
@@ -115,36 +118,46 @@ void AppendOverrides(std::vector<std::string>& args, const Overrides& overrides)
 // the observation settings it records (the reference agents': their sidecar files).
 EvaluationGroup GroupOnScenarios(const StudySpec& spec, const std::filesystem::path& out,
                                  const std::string& scenarios, int episodes, std::uint64_t seed) {
-  EvaluationGroup group{scenarios, {}, {}, episodes, seed};
+  EvaluationGroup group{scenarios, {}, {}, {}, episodes, seed};
+  const auto add = [&group](std::string model, std::filesystem::path policy, int networks) {
+    group.models.push_back(std::move(model));
+    group.policies.push_back(std::move(policy));
+    group.networks.push_back(networks);
+  };
   for (const PpoConfigSpec& config : spec.ppo_configs) {
     for (int k = 0; k < spec.ppo_seeds; ++k) {
-      group.models.push_back(SeedModelName(config.name, k));
-      group.policies.push_back(RunPolicy(out, config.name, k));
+      add(SeedModelName(config.name, k), RunPolicy(out, config.name, k), 1);
     }
   }
   for (const EnsembleSpec& ensemble : spec.ensembles) {
     for (int k = 0; k < ensemble.count; ++k) {
-      group.models.push_back(SeedModelName(ensemble.name, k));
-      group.policies.push_back(EnsemblePolicyFile(out, ensemble.name, k));
+      add(SeedModelName(ensemble.name, k), EnsemblePolicyFile(out, ensemble.name, k),
+          static_cast<int>(ensemble.members.size()));
     }
   }
   for (const StudentSpec& student : spec.students) {
     for (int k = 0; k < student.count; ++k) {
-      group.models.push_back(SeedModelName(student.name, k));
-      group.policies.push_back(StudentPolicyFile(out, student.name, k));
+      add(SeedModelName(student.name, k), StudentPolicyFile(out, student.name, k), 1);
     }
   }
   for (const FineTuneSpec& fine_tune : spec.fine_tunes) {
     for (int k = 0; k < fine_tune.count; ++k) {
-      group.models.push_back(SeedModelName(fine_tune.name, k));
-      group.policies.push_back(FineTunePolicyFile(out, fine_tune.name, k));
+      add(SeedModelName(fine_tune.name, k), FineTunePolicyFile(out, fine_tune.name, k), 1);
     }
   }
   for (const std::filesystem::path& agent : spec.evaluation.reference_agents) {
-    group.models.push_back("ref." + agent.stem().string());
-    group.policies.push_back(agent);
+    add("ref." + agent.stem().string(), agent, 1);
   }
   return group;
+}
+
+// The seconds an evaluation of `group` takes beside another job.
+double EvaluationSeconds(const EvaluationGroup& group) {
+  double per_scenario_s = 0.0;
+  for (const int networks : group.networks) {
+    per_scenario_s += kEvaluationSecondsPerEpisode + kEvaluationSecondsPerNetworkEpisode * networks;
+  }
+  return per_scenario_s * group.episodes;
 }
 
 // A job running `program` with `args`, complete once `complete_marker` exists.
@@ -400,9 +413,8 @@ std::vector<StudyJob> BuildJobGraph(const StudySpec& spec, const std::filesystem
   AddTrainingFigureJobs(jobs, spec, out, policy_jobs);
   for (const EvaluationGroup& group : EvaluationGroups(spec, out)) {
     const std::filesystem::path dir = out / "eval" / group.scenario_set;
-    StudyJob job = NewJob(
-        "eval/" + group.scenario_set, "evaluate", {}, dir / "summary.json",
-        static_cast<double>(group.episodes * group.models.size()) / kEvaluationEpisodesPerSecond);
+    StudyJob job = NewJob("eval/" + group.scenario_set, "evaluate", {}, dir / "summary.json",
+                          EvaluationSeconds(group));
     for (std::size_t m = 0; m < group.models.size(); ++m) {
       const auto writer = policy_jobs.find(group.policies[m].string());
       if (writer != policy_jobs.end()) job.dependencies.push_back(writer->second);

@@ -40,6 +40,7 @@ struct EvaluationGroup {
   std::string scenario_set;         ///< "study", "paper" or "validation": folder eval/<set>
   std::vector<std::string> models;  ///< model names, e.g. "baseline.seed_0", "ref.baseline_3m"
   std::vector<std::filesystem::path> policies;
+  std::vector<int> networks;  ///< the networks each model runs: an ensemble's members, else 1
   int episodes = 0;
   std::uint64_t seed = 0;
 };
