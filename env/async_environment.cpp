@@ -10,7 +10,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "src/fixed_queue.h"
 #include "src/threads/cpu_relax.h"
+#include "src/threads/spin_lock.h"
 
 namespace colav {
 namespace {
@@ -26,9 +28,6 @@ constexpr int kPollsPerClockRead = 64;
 // passed over for one (TaskQueues::Pop).
 constexpr int kAffinityLookahead = 16;
 constexpr int kMaxPassOvers = 4;
-// A thread waiting for the spin lock yields its core after this many polls: the holder may have
-// been preempted on a busy machine.
-constexpr int kLockPollsBeforeYield = 256;
 
 // Polls `ready` for up to kSpinTime; returns whether it holds.
 template <typename Ready>
@@ -40,63 +39,6 @@ bool SpinUntil(const Ready& ready) {
   }
   return true;
 }
-
-// A lock for critical sections of a few dozen instructions, which each thread takes about once
-// per step. A contended std::mutex puts the waiter to sleep in the kernel and its holder wakes it
-// with a system call, together about as costly as a step: with one, perf showed the futex
-// wake-ups, and the pool stepped 8 worlds on 2 threads at 1.1-1.7x one thread in five runs on a
-// busy machine, against 1.4-1.9x for the synchronous pool in the same runs. A thread that finds
-// this lock taken spins instead.
-class SpinLock {
- public:
-  void lock() {
-    for (int polls = 0; locked_.exchange(true, std::memory_order_acquire);) {
-      while (locked_.load(std::memory_order_relaxed)) {
-        if (++polls % kLockPollsBeforeYield == 0) {
-          std::this_thread::yield();
-        } else {
-          CpuRelax();
-        }
-      }
-    }
-  }
-  void unlock() { locked_.store(false, std::memory_order_release); }
-
- private:
-  std::atomic<bool> locked_{false};
-};
-
-// A first-in first-out queue of at most `capacity` values that never allocates after its
-// construction (each world is at most once in each queue).
-template <typename T>
-class FixedQueue {
- public:
-  explicit FixedQueue(int capacity) : values_(capacity) {}
-  int size() const { return size_; }
-  /// The k-th value from the front.
-  T& operator[](int k) {
-    const int index = head_ + k;  // no modulo: a division costs more than the rest of a push
-    return values_[index < capacity() ? index : index - capacity()];
-  }
-  void Push(const T& value) { (*this)[size_++] = value; }
-  /// Removes the k-th value; those before it keep their order.
-  T Remove(int k) {
-    const T value = (*this)[k];
-    for (; k > 0; --k) (*this)[k] = (*this)[k - 1];
-    head_ = head_ + 1 < capacity() ? head_ + 1 : 0;
-    --size_;
-    return value;
-  }
-  T Pop() { return Remove(0); }
-  void Clear() { size_ = 0; }
-
- private:
-  int capacity() const { return static_cast<int>(values_.size()); }
-
-  std::vector<T> values_;
-  int head_ = 0;
-  int size_ = 0;
-};
 
 int CheckedWorldCount(int num_envs) {
   if (num_envs < 1) {
