@@ -45,10 +45,10 @@ unset key
 set xrange [0:1]
 set yrange [-26:0]
 set label 1 "critic: a privileged critic's agent; relieved: the memory takes the helm when the\nvessel stalls; rescued: the paper recipe's baseline after a second stall; near: at the\nhelm within that range of an obstacle, the memory elsewhere" at first 0, first -24.6 left font ',9'
-line = 0
-next_line(y) = drawn(y) == drawn(y) ? -(line = line + 1) : NaN
-plot line = 0, number = 0, \
-     data skip 7 using (0):(next_line($4)):(sprintf('%s  %s: %.1f %%, %.1f m, %.1f %%', \
+# A drawn row's line is the number its label is about to take (the y column is read first).
+line_of(y) = drawn(y) == drawn(y) ? -(number + 1) : NaN
+plot number = 0, \
+     data skip 7 using (0):(line_of($4)):(sprintf('%s  %s: %.1f %%, %.1f m, %.1f %%', \
        next_number($4), strcol(15), $4, $7, $10)) with labels left font ',10' notitle
 unset label 1
 unset multiplot
